@@ -1,0 +1,47 @@
+// Instruction sets: which kernels are compiled, which the CPU runs, and which one is used.
+//
+// The active ISA is, in order of precedence: a ScopedIsa/force_isa() override, the
+// EDGEWISE_ISA environment variable (reference|sse2|sse4_1|avx2|neon), or the best ISA
+// this CPU supports. `reference` is the scalar oracle, available everywhere.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace edgewise {
+
+enum class Isa : int { reference, sse2, sse4_1, avx2, neon };
+
+std::string_view isa_name(Isa isa);
+std::optional<Isa> parse_isa(std::string_view name);
+
+// ISAs built into this library, worst first (reference first).
+std::span<const Isa> compiled_isas();
+// Compiled and runnable on this CPU.
+bool isa_supported(Isa isa);
+std::vector<Isa> supported_isas();
+Isa best_isa();
+
+// The ISA that entry points use when their options do not name one. Throws
+// std::invalid_argument if EDGEWISE_ISA names an unknown or unsupported ISA.
+Isa active_isa();
+
+// Process-wide override; std::nullopt returns to the environment/CPU choice.
+// Throws std::invalid_argument for an ISA that is not supported here.
+void force_isa(std::optional<Isa> isa);
+
+// Forces an ISA for the lifetime of the object (tests, benchmarks), then restores.
+class ScopedIsa {
+ public:
+  explicit ScopedIsa(Isa isa);
+  ~ScopedIsa();
+  ScopedIsa(const ScopedIsa&) = delete;
+  ScopedIsa& operator=(const ScopedIsa&) = delete;
+
+ private:
+  std::optional<Isa> previous_;
+};
+
+}  // namespace edgewise

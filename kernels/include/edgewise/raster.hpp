@@ -1,0 +1,105 @@
+// Coverage rasterization: triangles in, 8x8 tile coverage masks out.
+//
+// Conventions (see DESIGN.md): pixel (i, j) is sampled at (i + 0.5, j + 0.5); vertices are
+// snapped to 1/256 px with ties to even; the top-left fill rule decides samples on edges; a tile
+// mask has bit (y * 8 + x) for pixel (tile_x * 8 + x, tile_y * 8 + y).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "edgewise/isa.hpp"
+
+namespace edgewise {
+
+inline constexpr int kTileSize = 8;
+inline constexpr int kSubpixelBits = 8;
+// Snapped vertices must lie in [-kGuardBand, kGuardBand) pixels on each axis.
+inline constexpr int kGuardBand = 32768;
+// Targets are at most this many pixels wide and high (every pixel lies inside the guard band).
+inline constexpr int kMaxTargetSize = kGuardBand;
+
+struct Vec2 {
+  float x, y;
+};
+
+// Half-open pixel rectangle [x0, x1) x [y0, y1).
+struct PixelRect {
+  std::int32_t x0, y0, x1, y1;
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+struct RasterTarget {
+  std::int32_t width = 0, height = 0;  // 0 .. kMaxTargetSize
+  std::optional<PixelRect> scissor;    // intersected with the target
+};
+
+// Winding as seen on screen (y down). Clockwise means a positive (x1-x0)(y2-y0)-(y1-y0)(x2-x0).
+enum class CullMode : std::uint8_t { none, clockwise, counter_clockwise };
+
+enum class TriangleStatus : std::uint8_t {
+  drawn,             // rasterized (it may still cover no sample)
+  culled_zero_area,  // zero area after snapping
+  culled_winding,    // removed by the cull mode
+  error_non_finite,  // a NaN or infinite coordinate
+  error_outside_guard_band,
+  error_bad_index,  // an index past the end of the vertex array
+};
+std::string_view describe(TriangleStatus status);
+inline bool is_error(TriangleStatus s) {
+  return s >= TriangleStatus::error_non_finite;
+}
+
+struct RasterOptions {
+  CullMode cull = CullMode::none;
+  std::optional<Isa> isa;  // default: active_isa()
+  // Optional: one status per triangle is written here (size must equal the triangle count).
+  std::span<TriangleStatus> statuses;
+};
+
+struct RasterReport {
+  std::uint64_t triangles = 0;
+  std::uint64_t drawn = 0;
+  std::uint64_t culled = 0;  // zero area or winding
+  std::uint64_t errors = 0;
+  std::optional<std::uint64_t> first_error_triangle;
+  TriangleStatus first_error = TriangleStatus::drawn;
+  Isa isa = Isa::reference;  // the ISA that ran
+};
+
+struct TileCoverage {
+  std::uint32_t triangle;  // index of the triangle in the call
+  std::uint16_t tile_x, tile_y;
+  std::uint64_t mask;  // never 0
+};
+
+// Receives tile coverage in triangle order; within a triangle, tiles come row by row
+// (tile_y ascending, then tile_x ascending). Batches are at most a few hundred tiles.
+class CoverageSink {
+ public:
+  virtual ~CoverageSink() = default;
+  virtual void consume(std::span<const TileCoverage> tiles) = 0;
+};
+
+// Triangles are indices[3t .. 3t+2] into `vertices`, or, with an empty `indices`, vertices
+// 3t .. 3t+2. Throws std::invalid_argument for a bad target, scissor, index count or options;
+// a bad triangle gets an error status and is not drawn.
+RasterReport rasterize(std::span<const Vec2> vertices, std::span<const std::uint32_t> indices,
+                       const RasterTarget& target, const RasterOptions& options,
+                       CoverageSink& sink);
+
+struct CoverageCount {
+  RasterReport report;
+  std::uint64_t pixels = 0;  // covered samples, summed over triangles
+};
+// Coverage only: the number of covered pixels, without delivering masks.
+CoverageCount count_coverage(std::span<const Vec2> vertices, std::span<const std::uint32_t> indices,
+                             const RasterTarget& target, const RasterOptions& options);
+
+// The target (and scissor) as the rectangle that rasterization is clipped to.
+// Throws std::invalid_argument for sizes outside 0 .. kMaxTargetSize or an inverted scissor.
+PixelRect clip_rect(const RasterTarget& target);
+
+}  // namespace edgewise
