@@ -36,7 +36,10 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
       ++report.drawn;
       if (!empty) {
         visitor.triangle = static_cast<std::uint32_t>(t);
-        if (setup.narrow) {
+        const PixelRect& box = setup.box;
+        if (setup.narrow && box.x1 - box.x0 <= kTileSize && box.y1 - box.y0 <= kTileSize) {
+          walk_block<Arch>(setup, visitor);
+        } else if (setup.narrow) {
           walk_tiles<Arch, std::int32_t>(setup, visitor);
         } else {
           walk_tiles<Arch, std::int64_t>(setup, visitor);
@@ -59,6 +62,9 @@ struct CountingVisitor {
   void tile(std::uint32_t, std::uint32_t, std::uint64_t mask) {
     pixels += static_cast<std::uint64_t>(std::popcount(mask));
   }
+  void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t, std::uint64_t mask) {
+    pixels += static_cast<std::uint64_t>(std::popcount(mask)) * (end - begin);
+  }
 };
 
 // Buffers tiles and hands them to the sink in batches.
@@ -70,6 +76,11 @@ class BufferingVisitor {
     buffer_[count_++] = {triangle, static_cast<std::uint16_t>(tile_x),
                          static_cast<std::uint16_t>(tile_y), mask};
     if (count_ == kCapacity) flush();
+  }
+  void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
+                  std::uint64_t mask) {
+    for (std::uint32_t tile_x = begin; tile_x < end; ++tile_x)
+      tile(tile_x, tile_y, mask);
   }
   void flush() {
     if (count_ != 0) sink_.consume({buffer_, count_});

@@ -1,8 +1,11 @@
-// The tile walk: a triangle's clipped box in 8x8 tiles, each tile rejected, accepted or
-// evaluated per pixel. The partial-tile evaluator steps whole rows of edge values in xsimd
-// batches (one row of 8 per step with 8 lanes, half rows with 4 lanes).
+// The tile walk: a triangle's clipped box in 8x8 tiles. Each tile row finds the tiles that no
+// edge rejects and, among them, the run that every edge accepts; the accepted run is delivered
+// whole and only the tiles at its two ends are evaluated per pixel. The partial-tile evaluator
+// steps whole rows of edge values in xsimd batches (a row of 8 per step with 8 lanes, half rows
+// with 4 lanes). A triangle whose box fits in 8x8 pixels is evaluated as one unaligned block.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -32,20 +35,25 @@ class TileEvaluator {
         column_offset_[e][h] = a * Lanes::load_aligned(kColumn + h * kLanes);
       }
       row_step_[e] = Lanes(setup.edge[e].b);
+      b_[e] = setup.edge[e].b;
     }
   }
 
-  // Bit (y * 8 + x) set when the sample at (x, y) of the tile is covered; `g` holds each
-  // edge's G at the tile's first sample, already within +-2^29 (see the overflow analysis).
-  std::uint64_t coverage(const std::int32_t g[3]) const {
+  // Bit (y * 8 + x) set when the sample at (x, y) of the block is covered, for rows
+  // first_row .. end_row - 1 (others 0). `g` holds each edge's G at the block's first sample,
+  // within +-2^29 (see the overflow analysis), and the edges' b steps down the rows.
+  std::uint64_t coverage(const std::int32_t g[3], int first_row, int end_row) const {
+    // G at the first evaluated row: a sample of the tile, so no int32 overflow.
+    const Lanes g0(g[0] + b_[0] * first_row), g1(g[1] + b_[1] * first_row),
+        g2(g[2] + b_[2] * first_row);
     Lanes v0[kStepsPerRow], v1[kStepsPerRow], v2[kStepsPerRow];
     for (std::size_t h = 0; h < kStepsPerRow; ++h) {
-      v0[h] = Lanes(g[0]) + column_offset_[0][h];
-      v1[h] = Lanes(g[1]) + column_offset_[1][h];
-      v2[h] = Lanes(g[2]) + column_offset_[2][h];
+      v0[h] = g0 + column_offset_[0][h];
+      v1[h] = g1 + column_offset_[1][h];
+      v2[h] = g2 + column_offset_[2][h];
     }
     std::uint64_t outside = 0;  // sign bit of any edge: the sample is outside
-    for (int row = 0; row < kTileSize; ++row) {
+    for (int row = first_row; row < end_row; ++row) {
       for (std::size_t h = 0; h < kStepsPerRow; ++h) {
         const std::uint64_t bits = sign_bits<Arch>(v0[h] | v1[h] | v2[h]);
         outside |= bits << (row * kTileSize + h * kLanes);
@@ -54,13 +62,25 @@ class TileEvaluator {
         v2[h] += row_step_[2];
       }
     }
-    return ~outside;
+    return ~outside & row_bits(first_row, end_row);
+  }
+
+  // Mask bits of rows first .. end - 1 (0 <= first < end <= 8).
+  static std::uint64_t row_bits(int first, int end) {
+    return (~std::uint64_t{0} << (8 * first)) & (~std::uint64_t{0} >> (8 * (kTileSize - end)));
   }
 
  private:
   Lanes column_offset_[3][kStepsPerRow];
   Lanes row_step_[3];
+  std::int32_t b_[3];
 };
+
+// Mask bits of columns first .. end - 1 in every row (0 <= first < end <= 8).
+inline std::uint64_t column_bits(int first, int end) {
+  const std::uint64_t byte = (0xFFu << first) & (0xFFu >> (kTileSize - end));
+  return byte * 0x0101010101010101ull;
+}
 
 inline std::int32_t clamp_to_tile_range(std::int64_t g) {
   constexpr std::int64_t kLimit = std::int64_t{1} << 29;
@@ -70,25 +90,37 @@ inline std::int32_t clamp_to_tile_range(std::int32_t g) {
   return g;
 }  // narrow: exact already
 
-// Pixels of one tile row/column inside [lo, hi) of the clip box, as mask bits.
-inline std::uint64_t clip_rows(std::int32_t tile_origin, std::int32_t lo, std::int32_t hi) {
-  const std::int32_t first = lo > tile_origin ? lo - tile_origin : 0;
-  const std::int32_t end = hi - tile_origin < kTileSize ? hi - tile_origin : kTileSize;
-  return (~std::uint64_t{0} << (8 * first)) & (~std::uint64_t{0} >> (8 * (kTileSize - end)));
+// The smallest k >= lo with num <= den * k, or the largest k < hi with den * k <= num,
+// clamped to [lo, hi]. Exact: num and den (|num| < 2^51, |den| <= 2^27) convert to double
+// exactly; an integer quotient divides exactly, and any other lies at least 1/|den| >= 2^-27
+// from an integer while the division errs by at most |q| 2^-53 <= 2^-40 for |q| <= 2^13;
+// larger quotients lie beyond the clamp (at most 4096 tiles) either way.
+inline std::int32_t first_at_least(std::int64_t num, std::int64_t den, std::int32_t lo,
+                                   std::int32_t hi) {
+  const double k = std::ceil(static_cast<double>(num) / static_cast<double>(den));
+  return k <= lo ? lo : (k >= hi ? hi : static_cast<std::int32_t>(k));
 }
-inline std::uint64_t clip_columns(std::int32_t tile_origin, std::int32_t lo, std::int32_t hi) {
-  const std::int32_t first = lo > tile_origin ? lo - tile_origin : 0;
-  const std::int32_t end = hi - tile_origin < kTileSize ? hi - tile_origin : kTileSize;
-  const std::uint64_t byte = (0xFFu << first) & (0xFFu >> (kTileSize - end));
-  return byte * 0x0101010101010101ull;
+inline std::int32_t end_at_most(std::int64_t num, std::int64_t den, std::int32_t lo,
+                                std::int32_t hi) {
+  const double k = std::floor(static_cast<double>(num) / static_cast<double>(den)) + 1.0;
+  return k <= lo ? lo : (k >= hi ? hi : static_cast<std::int32_t>(k));
 }
 
-// Calls visitor.tile(tile_x, tile_y, mask) for every tile with covered samples, row by row.
-// Int is the type the walk steps G in: int32 when setup.narrow, int64 otherwise.
+// Rows wider than this many tiles find their ranges by division rather than tile by tile.
+inline constexpr std::int32_t kScanColumns = 4;
+
+// Calls visitor.tile(tile_x, tile_y, mask) for every tile with covered samples, and
+// visitor.full_tiles(tile_x_begin, tile_x_end, tile_y, mask) for runs of tiles that share one
+// mask, in row order. Int is the type the walk steps G in: int32 when setup.narrow, else int64.
 template <class Arch, class Int, class Visitor>
 void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
   const TileEvaluator<Arch> evaluator(setup);
   const PixelRect& box = setup.box;
+  // Tile columns 0 .. columns-1 from origin_x; those in [inner_begin, inner_end) lie wholly
+  // inside the box horizontally.
+  const std::int32_t columns = ((box.x1 - 1 - setup.origin_x) >> 3) + 1;
+  const std::int32_t inner_begin = (box.x0 - setup.origin_x + kTileSize - 1) >> 3;
+  const std::int32_t inner_end = (box.x1 - setup.origin_x) >> 3;
   Int row_g[3], step_x[3], step_y[3], max_offset[3], min_offset[3];
   for (int e = 0; e < 3; ++e) {
     const Int a = setup.edge[e].a, b = setup.edge[e].b;
@@ -99,32 +131,116 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
     max_offset[e] = (kTileSize - 1) * ((a > 0 ? a : 0) + (b > 0 ? b : 0));
     min_offset[e] = (kTileSize - 1) * ((a < 0 ? a : 0) + (b < 0 ? b : 0));
   }
-  const std::int32_t last_x = box.x1 - 1, last_y = box.y1 - 1;
-  for (std::int32_t ty = setup.origin_y; ty <= last_y; ty += kTileSize) {
-    const std::uint64_t rows = clip_rows(ty, box.y0, box.y1);
-    Int g[3] = {row_g[0], row_g[1], row_g[2]};
-    for (std::int32_t tx = setup.origin_x; tx <= last_x; tx += kTileSize) {
-      const bool rejected =
-          (g[0] + max_offset[0] < 0) | (g[1] + max_offset[1] < 0) | (g[2] + max_offset[2] < 0);
-      if (!rejected) {
-        std::uint64_t mask = rows & clip_columns(tx, box.x0, box.x1);
-        const bool accepted =
-            (g[0] + min_offset[0] >= 0) & (g[1] + min_offset[1] >= 0) & (g[2] + min_offset[2] >= 0);
-        if (!accepted) {
-          const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0]), clamp_to_tile_range(g[1]),
-                                          clamp_to_tile_range(g[2])};
-          mask &= evaluator.coverage(tile_g);
+
+  const auto evaluate = [&](const Int g[3], std::int32_t column, std::uint32_t tile_y,
+                            int first_row, int end_row) {
+    const std::int32_t tx = setup.origin_x + column * kTileSize;
+    const int first_column = box.x0 > tx ? box.x0 - tx : 0;
+    const int end_column = box.x1 - tx < kTileSize ? box.x1 - tx : kTileSize;
+    const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0]), clamp_to_tile_range(g[1]),
+                                    clamp_to_tile_range(g[2])};
+    const std::uint64_t mask =
+        evaluator.coverage(tile_g, first_row, end_row) & column_bits(first_column, end_column);
+    if (mask != 0) visitor.tile(static_cast<std::uint32_t>(tx / kTileSize), tile_y, mask);
+  };
+
+  for (std::int32_t ty = setup.origin_y; ty < box.y1; ty += kTileSize) {
+    const int first_row = box.y0 > ty ? box.y0 - ty : 0;
+    const int end_row = box.y1 - ty < kTileSize ? box.y1 - ty : kTileSize;
+    const std::uint64_t rows = TileEvaluator<Arch>::row_bits(first_row, end_row);
+    const std::uint32_t tile_y = static_cast<std::uint32_t>(ty / kTileSize);
+    Int g[3];
+    for (int e = 0; e < 3; ++e)
+      g[e] = row_g[e];
+
+    if (columns <= kScanColumns) {
+      for (std::int32_t column = 0; column < columns; ++column) {
+        const bool rejected =
+            (g[0] + max_offset[0] < 0) | (g[1] + max_offset[1] < 0) | (g[2] + max_offset[2] < 0);
+        if (!rejected) {
+          const bool accepted = (g[0] + min_offset[0] >= 0) & (g[1] + min_offset[1] >= 0) &
+                                (g[2] + min_offset[2] >= 0);
+          if (accepted && column >= inner_begin && column < inner_end) {
+            visitor.full_tiles(static_cast<std::uint32_t>(setup.origin_x / kTileSize + column),
+                               static_cast<std::uint32_t>(setup.origin_x / kTileSize + column + 1),
+                               tile_y, rows);
+          } else {
+            evaluate(g, column, tile_y, first_row, end_row);
+          }
         }
-        if (mask != 0) {
-          visitor.tile(static_cast<std::uint32_t>(tx / kTileSize),
-                       static_cast<std::uint32_t>(ty / kTileSize), mask);
+        for (int e = 0; e < 3; ++e)
+          g[e] += step_x[e];
+      }
+    } else {
+      // Per edge, tile k's extreme sample is G + offset + step_x k: solve for the range of k.
+      std::int32_t begin = 0, end = columns, full_begin = inner_begin, full_end = inner_end;
+      for (int e = 0; e < 3; ++e) {
+        const std::int64_t top = std::int64_t{g[e]} + max_offset[e];
+        const std::int64_t bottom = std::int64_t{g[e]} + min_offset[e];
+        const std::int64_t step = step_x[e];
+        if (step > 0) {
+          begin = first_at_least(-top, step, begin, end);
+          full_begin = first_at_least(-bottom, step, full_begin, columns);
+        } else if (step < 0) {
+          end = end_at_most(top, -step, begin, end);
+          full_end = end_at_most(bottom, -step, 0, full_end);
+        } else {
+          if (top < 0) end = begin;
+          if (bottom < 0) full_end = 0;
         }
       }
+      if (full_begin >= full_end) full_begin = full_end = end;  // no accepted run
+      Int tile_g[3];
       for (int e = 0; e < 3; ++e)
-        g[e] += step_x[e];
+        tile_g[e] = g[e] + step_x[e] * begin;
+      for (std::int32_t column = begin; column < full_begin; ++column) {
+        evaluate(tile_g, column, tile_y, first_row, end_row);
+        for (int e = 0; e < 3; ++e)
+          tile_g[e] += step_x[e];
+      }
+      if (full_begin < full_end) {
+        visitor.full_tiles(static_cast<std::uint32_t>(setup.origin_x / kTileSize + full_begin),
+                           static_cast<std::uint32_t>(setup.origin_x / kTileSize + full_end),
+                           tile_y, rows);
+      }
+      for (int e = 0; e < 3; ++e)
+        tile_g[e] = g[e] + step_x[e] * full_end;
+      for (std::int32_t column = full_end; column < end; ++column) {
+        evaluate(tile_g, column, tile_y, first_row, end_row);
+        for (int e = 0; e < 3; ++e)
+          tile_g[e] += step_x[e];
+      }
     }
     for (int e = 0; e < 3; ++e)
       row_g[e] += step_y[e];
+  }
+}
+
+// A triangle whose box fits in 8x8 pixels: one block evaluated at the box's corner, then
+// split among the (up to four) tiles it overlaps. Needs setup.narrow.
+template <class Arch, class Visitor>
+void walk_block(const TriangleSetup& setup, Visitor& visitor) {
+  const TileEvaluator<Arch> evaluator(setup);
+  const PixelRect& box = setup.box;
+  const std::int32_t dx = box.x0 - setup.origin_x, dy = box.y0 - setup.origin_y;  // 0 .. 7
+  std::int32_t g[3];
+  for (int e = 0; e < 3; ++e) {
+    g[e] = static_cast<std::int32_t>(setup.edge[e].g) + setup.edge[e].a * dx + setup.edge[e].b * dy;
+  }
+  const std::uint64_t block =
+      evaluator.coverage(g, 0, box.y1 - box.y0) & column_bits(0, box.x1 - box.x0);
+  // Block column c lands in column c + dx of the left tiles, c + dx - 8 of the right ones.
+  const std::uint64_t left = (block & column_bits(0, kTileSize - dx)) << dx;
+  const std::uint64_t right = dx == 0 ? 0 : (block >> (kTileSize - dx)) & column_bits(0, dx);
+  const std::uint32_t tx = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
+  const std::uint32_t ty = static_cast<std::uint32_t>(setup.origin_y / kTileSize);
+  const int shift_down = 8 * dy;
+  if (const std::uint64_t m = left << shift_down) visitor.tile(tx, ty, m);
+  if (const std::uint64_t m = right << shift_down) visitor.tile(tx + 1, ty, m);
+  if (dy != 0) {
+    const int shift_up = 8 * (kTileSize - dy);  // 8 .. 56
+    if (const std::uint64_t m = left >> shift_up) visitor.tile(tx, ty + 1, m);
+    if (const std::uint64_t m = right >> shift_up) visitor.tile(tx + 1, ty + 1, m);
   }
 }
 

@@ -19,13 +19,17 @@
 //   [-2^29, 2^29]: a value beyond the clamp has the same sign at every sample of the tile, and
 //   clamped values stay within +-(2^29 + 2^28), far from int32 overflow.
 //   The walk itself steps G from tile to tile. Over the tiles of a triangle's clipped box
-//   (plus one step past the last tile) G is affine, so its extremes are at the four corners:
-//   when all four fit in int32 the whole walk runs in int32 ("narrow", every triangle up to
-//   about 1000 px across); otherwise it steps in int64 and clamps per tile ("wide").
+//   (plus one step past the last tile, and 7 samples into each tile) G is affine, so
+//   |G| <= |G(origin)| + |A| reach_x + |B| reach_y; when that bound fits in int32 the whole walk
+//   runs in int32 ("narrow": every triangle up to several hundred pixels across); otherwise it
+//   steps in int64 and clamps per tile ("wide").
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+
+#include <xsimd/xsimd.hpp>
 
 #include "edgewise/raster.hpp"
 
@@ -44,15 +48,35 @@ struct TriangleSetup {
 };
 
 inline constexpr std::int32_t kGuardBandFixed = kGuardBand << kSubpixelBits;
+inline constexpr std::size_t kSnapLanes = 8;  // x0 y0 x1 y1 x2 y2 and two pads
 
-// Ties-to-even rounding to 1/256 px; false for NaN, infinity or outside the guard band.
-inline bool snap_coordinate(float v, std::int32_t& fixed) {
-  const float scaled = v * 256.0f;  // exact: scaling by a power of two (overflow gives inf)
-  if (!(scaled > -8388609.0f && scaled < 8388608.0f)) return false;
-  const float rounded = std::nearbyint(scaled);  // round-to-nearest-even (default FP mode)
-  if (!(rounded < 8388608.0f)) return false;     // 2^23 - 0.5 rounds up to the band's end
-  fixed = static_cast<std::int32_t>(rounded);
-  return true;
+// Snaps the six coordinates to 1/256 px, ties to even, all lanes at once. False when any is
+// NaN, infinite or outside the guard band (the caller then tells which).
+template <class Arch>
+inline bool snap_vertices(const Vec2& p0, const Vec2& p1, const Vec2& p2,
+                          std::int32_t fixed[kSnapLanes]) {
+  using Floats = xsimd::batch<float, Arch>;
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  static_assert(kSnapLanes % Floats::size == 0, "whole batches of coordinates");
+  alignas(64) const float coords[kSnapLanes] = {p0.x, p0.y, p1.x, p1.y, p2.x, p2.y, 0.0f, 0.0f};
+  bool in_band = true;
+  for (std::size_t h = 0; h < kSnapLanes; h += Floats::size) {
+    // Scaling by 256 is exact. |scaled| <= 2^23 is false for NaN and infinity; after rounding
+    // (the default mode: nearest, ties to even) only exactly 2^23 can still be out of the band.
+    const Floats scaled = Floats::load_aligned(coords + h) * Floats(256.0f);
+    const Ints rounded = xsimd::nearbyint_as_int(scaled);
+    in_band = in_band && xsimd::all(xsimd::abs(scaled) <= Floats(8388608.0f)) &&
+              xsimd::all(rounded < Ints(kGuardBandFixed));
+    rounded.store_aligned(fixed + h);
+  }
+  return in_band;
+}
+
+// The status of a triangle that snap_vertices() refused.
+inline TriangleStatus snap_failure(const Vec2& p0, const Vec2& p1, const Vec2& p2) {
+  const bool finite = std::isfinite(p0.x) && std::isfinite(p0.y) && std::isfinite(p1.x) &&
+                      std::isfinite(p1.y) && std::isfinite(p2.x) && std::isfinite(p2.y);
+  return finite ? TriangleStatus::error_outside_guard_band : TriangleStatus::error_non_finite;
 }
 
 inline std::int64_t min3(std::int64_t a, std::int64_t b, std::int64_t c) {
@@ -72,14 +96,8 @@ inline TriangleStatus setup_triangle(const Vec2& p0, const Vec2& p1, const Vec2&
                                      const PixelRect& clip, CullMode cull, TriangleSetup& setup,
                                      bool& empty) {
   empty = true;
-  const float coords[6] = {p0.x, p0.y, p1.x, p1.y, p2.x, p2.y};
-  for (float c : coords) {
-    if (!std::isfinite(c)) return TriangleStatus::error_non_finite;
-  }
-  std::int32_t fixed[6];
-  for (int i = 0; i < 6; ++i) {
-    if (!snap_coordinate(coords[i], fixed[i])) return TriangleStatus::error_outside_guard_band;
-  }
+  alignas(64) std::int32_t fixed[kSnapLanes];
+  if (!snap_vertices<EDGEWISE_ARCH>(p0, p1, p2, fixed)) return snap_failure(p0, p1, p2);
   std::int64_t x[3] = {fixed[0], fixed[2], fixed[4]};
   std::int64_t y[3] = {fixed[1], fixed[3], fixed[5]};
 
@@ -130,8 +148,9 @@ inline TriangleStatus setup_triangle(const Vec2& p0, const Vec2& p1, const Vec2&
     const std::int64_t value = ea * (px - x[a]) + eb * (py - y[a]) - (top_left ? 0 : 1);
     const std::int64_t g = value >> 8;  // floor division (arithmetic shift)
     setup.edge[e] = {static_cast<std::int32_t>(ea), static_cast<std::int32_t>(eb), g};
-    narrow = narrow && fits_int32(g) && fits_int32(g + ea * reach_x) &&
-             fits_int32(g + eb * reach_y) && fits_int32(g + ea * reach_x + eb * reach_y);
+    const std::int64_t bound =
+        (g < 0 ? -g : g) + (ea < 0 ? -ea : ea) * reach_x + (eb < 0 ? -eb : eb) * reach_y;
+    narrow = narrow && bound <= INT32_MAX;
   }
   setup.narrow = narrow;
   return TriangleStatus::drawn;
