@@ -13,29 +13,49 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 using Arch = EDGEWISE_ARCH;
 
-// Runs setup and the walk for every triangle of the batch, keeping the report.
+// Fetches, sets up and walks every triangle of the batch, a group of setup lanes at a time.
 template <class Visitor>
 void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterReport& report) {
+  constexpr std::size_t kLanes = kSetupLanes<Arch>;
   report.triangles += batch.triangle_count;
-  for (std::size_t t = 0; t < batch.triangle_count; ++t) {
-    std::uint32_t i0 = static_cast<std::uint32_t>(3 * t), i1 = i0 + 1, i2 = i0 + 2;
-    if (batch.indices != nullptr) {
-      i0 = batch.indices[3 * t];
-      i1 = batch.indices[3 * t + 1];
-      i2 = batch.indices[3 * t + 2];
+  TriangleGroup<Arch> group;
+  TriangleSetup setups[kLanes];
+  TriangleStatus statuses[kLanes];
+  bool visible[kLanes];
+  bool bad_index[kLanes];
+  for (std::size_t first = 0; first < batch.triangle_count; first += kLanes) {
+    const std::size_t count =
+        batch.triangle_count - first < kLanes ? batch.triangle_count - first : kLanes;
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      // Lanes past the end repeat the last triangle; their results are ignored.
+      const std::size_t t = first + (l < count ? l : count - 1);
+      std::size_t corner[3] = {3 * t, 3 * t + 1, 3 * t + 2};
+      if (batch.indices != nullptr) {
+        for (int i = 0; i < 3; ++i)
+          corner[i] = batch.indices[3 * t + i];
+      }
+      bad_index[l] = false;
+      for (int i = 0; i < 3; ++i) {
+        Vec2 v{0.0f, 0.0f};
+        if (corner[i] < batch.vertex_count) {
+          v = batch.vertices[corner[i]];
+        } else {
+          bad_index[l] = true;
+        }
+        group.x[i][l] = v.x;
+        group.y[i][l] = v.y;
+      }
     }
-    TriangleStatus status = TriangleStatus::error_bad_index;
-    TriangleSetup setup;
-    bool empty = true;
-    if (i0 < batch.vertex_count && i1 < batch.vertex_count && i2 < batch.vertex_count) {
-      status = setup_triangle(batch.vertices[i0], batch.vertices[i1], batch.vertices[i2],
-                              batch.clip, batch.cull, setup, empty);
-    }
-    if (batch.statuses != nullptr) batch.statuses[t] = status;
-    if (status == TriangleStatus::drawn) {
-      ++report.drawn;
-      if (!empty) {
+    setup_triangles<Arch>(group, batch.clip, batch.cull, setups, statuses, visible);
+    for (std::size_t l = 0; l < count; ++l) {
+      const std::size_t t = first + l;
+      const TriangleStatus status = bad_index[l] ? TriangleStatus::error_bad_index : statuses[l];
+      if (batch.statuses != nullptr) batch.statuses[t] = status;
+      if (status == TriangleStatus::drawn) {
+        ++report.drawn;
+        if (!visible[l]) continue;
         visitor.triangle = static_cast<std::uint32_t>(t);
+        const TriangleSetup& setup = setups[l];
         const PixelRect& box = setup.box;
         if (setup.narrow && box.x1 - box.x0 <= kTileSize && box.y1 - box.y0 <= kTileSize) {
           walk_block<Arch>(setup, visitor);
@@ -44,14 +64,14 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
         } else {
           walk_tiles<Arch, std::int64_t>(setup, visitor);
         }
+      } else if (is_error(status)) {
+        if (report.errors++ == 0) {
+          report.first_error_triangle = t;
+          report.first_error = status;
+        }
+      } else {
+        ++report.culled;
       }
-    } else if (is_error(status)) {
-      if (report.errors++ == 0) {
-        report.first_error_triangle = t;
-        report.first_error = status;
-      }
-    } else {
-      ++report.culled;
     }
   }
 }

@@ -35,34 +35,30 @@ class TileEvaluator {
         column_offset_[e][h] = a * Lanes::load_aligned(kColumn + h * kLanes);
       }
       row_step_[e] = Lanes(setup.edge[e].b);
-      b_[e] = setup.edge[e].b;
     }
   }
 
-  // Bit (y * 8 + x) set when the sample at (x, y) of the block is covered, for rows
-  // first_row .. end_row - 1 (others 0). `g` holds each edge's G at the block's first sample,
-  // within +-2^29 (see the overflow analysis), and the edges' b steps down the rows.
-  std::uint64_t coverage(const std::int32_t g[3], int first_row, int end_row) const {
-    // G at the first evaluated row: a sample of the tile, so no int32 overflow.
-    const Lanes g0(g[0] + b_[0] * first_row), g1(g[1] + b_[1] * first_row),
-        g2(g[2] + b_[2] * first_row);
+  // Bit (y * 8 + x) set when the sample at (x, y) of the block is covered. `g` holds each
+  // edge's G at the block's first sample, within +-2^29 (see the overflow analysis). All eight
+  // rows are evaluated: a fixed trip count unrolls, and callers mask the rows they need.
+  std::uint64_t coverage(const std::int32_t g[3]) const {
+    const Lanes g0(g[0]), g1(g[1]), g2(g[2]);
     Lanes v0[kStepsPerRow], v1[kStepsPerRow], v2[kStepsPerRow];
     for (std::size_t h = 0; h < kStepsPerRow; ++h) {
       v0[h] = g0 + column_offset_[0][h];
       v1[h] = g1 + column_offset_[1][h];
       v2[h] = g2 + column_offset_[2][h];
     }
-    std::uint64_t outside = 0;  // sign bit of any edge: the sample is outside
-    for (int row = first_row; row < end_row; ++row) {
+    Lanes any_outside[kTileSize * kStepsPerRow];  // negative where some edge excludes the sample
+    for (int row = 0; row < kTileSize; ++row) {
       for (std::size_t h = 0; h < kStepsPerRow; ++h) {
-        const std::uint64_t bits = sign_bits<Arch>(v0[h] | v1[h] | v2[h]);
-        outside |= bits << (row * kTileSize + h * kLanes);
+        any_outside[row * kStepsPerRow + h] = v0[h] | v1[h] | v2[h];
         v0[h] += row_step_[0];
         v1[h] += row_step_[1];
         v2[h] += row_step_[2];
       }
     }
-    return ~outside & row_bits(first_row, end_row);
+    return ~sign_bits_8x8<Arch>(any_outside);
   }
 
   // Mask bits of rows first .. end - 1 (0 <= first < end <= 8).
@@ -73,7 +69,6 @@ class TileEvaluator {
  private:
   Lanes column_offset_[3][kStepsPerRow];
   Lanes row_step_[3];
-  std::int32_t b_[3];
 };
 
 // Mask bits of columns first .. end - 1 in every row (0 <= first < end <= 8).
@@ -139,8 +134,9 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
     const int end_column = box.x1 - tx < kTileSize ? box.x1 - tx : kTileSize;
     const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0]), clamp_to_tile_range(g[1]),
                                     clamp_to_tile_range(g[2])};
-    const std::uint64_t mask =
-        evaluator.coverage(tile_g, first_row, end_row) & column_bits(first_column, end_column);
+    const std::uint64_t mask = evaluator.coverage(tile_g) &
+                               TileEvaluator<Arch>::row_bits(first_row, end_row) &
+                               column_bits(first_column, end_column);
     if (mask != 0) visitor.tile(static_cast<std::uint32_t>(tx / kTileSize), tile_y, mask);
   };
 
@@ -227,8 +223,9 @@ void walk_block(const TriangleSetup& setup, Visitor& visitor) {
   for (int e = 0; e < 3; ++e) {
     g[e] = static_cast<std::int32_t>(setup.edge[e].g) + setup.edge[e].a * dx + setup.edge[e].b * dy;
   }
-  const std::uint64_t block =
-      evaluator.coverage(g, 0, box.y1 - box.y0) & column_bits(0, box.x1 - box.x0);
+  const std::uint64_t block = evaluator.coverage(g) &
+                              TileEvaluator<Arch>::row_bits(0, box.y1 - box.y0) &
+                              column_bits(0, box.x1 - box.x0);
   // Block column c lands in column c + dx of the left tiles, c + dx - 8 of the right ones.
   const std::uint64_t left = (block & column_bits(0, kTileSize - dx)) << dx;
   const std::uint64_t right = dx == 0 ? 0 : (block >> (kTileSize - dx)) & column_bits(0, dx);

@@ -48,112 +48,140 @@ struct TriangleSetup {
 };
 
 inline constexpr std::int32_t kGuardBandFixed = kGuardBand << kSubpixelBits;
-inline constexpr std::size_t kSnapLanes = 8;  // x0 y0 x1 y1 x2 y2 and two pads
 
-// Snaps the six coordinates to 1/256 px, ties to even, all lanes at once. False when any is
-// NaN, infinite or outside the guard band (the caller then tells which).
-template <class Arch>
-inline bool snap_vertices(const Vec2& p0, const Vec2& p1, const Vec2& p2,
-                          std::int32_t fixed[kSnapLanes]) {
-  using Floats = xsimd::batch<float, Arch>;
-  using Ints = xsimd::batch<std::int32_t, Arch>;
-  static_assert(kSnapLanes % Floats::size == 0, "whole batches of coordinates");
-  alignas(64) const float coords[kSnapLanes] = {p0.x, p0.y, p1.x, p1.y, p2.x, p2.y, 0.0f, 0.0f};
-  bool in_band = true;
-  for (std::size_t h = 0; h < kSnapLanes; h += Floats::size) {
-    // Scaling by 256 is exact. |scaled| <= 2^23 is false for NaN and infinity; after rounding
-    // (the default mode: nearest, ties to even) only exactly 2^23 can still be out of the band.
-    const Floats scaled = Floats::load_aligned(coords + h) * Floats(256.0f);
-    const Ints rounded = xsimd::nearbyint_as_int(scaled);
-    in_band = in_band && xsimd::all(xsimd::abs(scaled) <= Floats(8388608.0f)) &&
-              xsimd::all(rounded < Ints(kGuardBandFixed));
-    rounded.store_aligned(fixed + h);
-  }
-  return in_band;
-}
-
-// The status of a triangle that snap_vertices() refused.
-inline TriangleStatus snap_failure(const Vec2& p0, const Vec2& p1, const Vec2& p2) {
-  const bool finite = std::isfinite(p0.x) && std::isfinite(p0.y) && std::isfinite(p1.x) &&
-                      std::isfinite(p1.y) && std::isfinite(p2.x) && std::isfinite(p2.y);
+// The status of a triangle whose coordinates did not snap into the guard band.
+inline TriangleStatus snap_failure(float x0, float y0, float x1, float y1, float x2, float y2) {
+  const bool finite = std::isfinite(x0) && std::isfinite(y0) && std::isfinite(x1) &&
+                      std::isfinite(y1) && std::isfinite(x2) && std::isfinite(y2);
   return finite ? TriangleStatus::error_outside_guard_band : TriangleStatus::error_non_finite;
 }
 
-inline std::int64_t min3(std::int64_t a, std::int64_t b, std::int64_t c) {
-  const std::int64_t m = a < b ? a : b;
-  return m < c ? m : c;
-}
-inline std::int64_t max3(std::int64_t a, std::int64_t b, std::int64_t c) {
-  const std::int64_t m = a > b ? a : b;
-  return m > c ? m : c;
-}
-inline bool fits_int32(std::int64_t v) {
-  return v >= INT32_MIN && v <= INT32_MAX;
-}
+// Triangles set up together, one per double lane.
+template <class Arch>
+inline constexpr std::size_t kSetupLanes = xsimd::batch<double, Arch>::size;
 
-// Fills `setup` for a drawn triangle; `empty` tells whether its box misses the clip rectangle.
-inline TriangleStatus setup_triangle(const Vec2& p0, const Vec2& p1, const Vec2& p2,
-                                     const PixelRect& clip, CullMode cull, TriangleSetup& setup,
-                                     bool& empty) {
-  empty = true;
-  alignas(64) std::int32_t fixed[kSnapLanes];
-  if (!snap_vertices<EDGEWISE_ARCH>(p0, p1, p2, fixed)) return snap_failure(p0, p1, p2);
-  std::int64_t x[3] = {fixed[0], fixed[2], fixed[4]};
-  std::int64_t y[3] = {fixed[1], fixed[3], fixed[5]};
+// Input of one group of triangles: vertex coordinates as given, one lane per triangle.
+template <class Arch>
+struct TriangleGroup {
+  alignas(64) float x[3][kSetupLanes<Arch>];
+  alignas(64) float y[3][kSetupLanes<Arch>];
+};
 
+// Sets up a group of triangles at once. Every quantity of the analysis above is an integer of
+// at most 51 bits, so double lanes hold it exactly and every sum, difference and product below
+// is exact (products of two 25-bit values, sums of at most three 50-bit values); division by
+// 256 or 8 is exact, and floor() of an exact quotient is exact. Writes each lane's status and,
+// for drawn triangles, `visible` (the clipped box is not empty) and `setups`.
+template <class Arch>
+inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip, CullMode cull,
+                            TriangleSetup* setups, TriangleStatus* statuses, bool* visible) {
+  using D = xsimd::batch<double, Arch>;
+  constexpr std::size_t kLanes = kSetupLanes<Arch>;
+  const auto load = [](const float* v) {
+    alignas(64) double lanes[kLanes];
+    for (std::size_t i = 0; i < kLanes; ++i)
+      lanes[i] = v[i];
+    return D::load_aligned(lanes);
+  };
+  // Snap: scaling by 256 is exact; |scaled| <= 2^23 fails for NaN and infinity, and after
+  // rounding (nearest, ties to even: the default mode) only exactly 2^23 can be outside.
+  const D kBand(static_cast<double>(kGuardBandFixed));
+  auto in_band = D(0.0) == D(0.0);
+  D x[3], y[3];
+  for (int i = 0; i < 3; ++i) {
+    const D sx = load(in.x[i]) * D(256.0), sy = load(in.y[i]) * D(256.0);
+    x[i] = xsimd::nearbyint(sx);
+    y[i] = xsimd::nearbyint(sy);
+    in_band = in_band && xsimd::abs(sx) <= kBand && xsimd::abs(sy) <= kBand && x[i] < kBand &&
+              y[i] < kBand;
+  }
   // Twice the signed area; positive is clockwise on screen (y down).
-  const std::int64_t area2 = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
-  if (area2 == 0) return TriangleStatus::culled_zero_area;
-  if ((cull == CullMode::clockwise && area2 > 0) ||
-      (cull == CullMode::counter_clockwise && area2 < 0)) {
-    return TriangleStatus::culled_winding;
-  }
-  if (area2 < 0) {  // make every edge function positive inside
-    std::int64_t t = x[1];
-    x[1] = x[2];
-    x[2] = t;
-    t = y[1];
-    y[1] = y[2];
-    y[2] = t;
-  }
+  const D area2 = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+  const auto clockwise = area2 > D(0.0);
+  const auto counter_clockwise = area2 < D(0.0);
+  // Make every edge function positive inside.
+  const D x1 = xsimd::select(counter_clockwise, x[2], x[1]);
+  const D y1 = xsimd::select(counter_clockwise, y[2], y[1]);
+  x[2] = xsimd::select(counter_clockwise, x[1], x[2]);
+  y[2] = xsimd::select(counter_clockwise, y[1], y[2]);
+  x[1] = x1;
+  y[1] = y1;
 
-  // Pixels whose sample 256 i + 128 lies within [min, max] of the snapped vertices.
-  const std::int64_t min_x = min3(x[0], x[1], x[2]), max_x = max3(x[0], x[1], x[2]);
-  const std::int64_t min_y = min3(y[0], y[1], y[2]), max_y = max3(y[0], y[1], y[2]);
-  PixelRect box{static_cast<std::int32_t>((min_x - 128 + 255) >> 8),
-                static_cast<std::int32_t>((min_y - 128 + 255) >> 8),
-                static_cast<std::int32_t>(((max_x - 128) >> 8) + 1),
-                static_cast<std::int32_t>(((max_y - 128) >> 8) + 1)};
-  box.x0 = box.x0 > clip.x0 ? box.x0 : clip.x0;
-  box.y0 = box.y0 > clip.y0 ? box.y0 : clip.y0;
-  box.x1 = box.x1 < clip.x1 ? box.x1 : clip.x1;
-  box.y1 = box.y1 < clip.y1 ? box.y1 : clip.y1;
-  if (box.empty()) return TriangleStatus::drawn;
-  empty = false;
-
-  setup.box = box;
-  setup.origin_x = box.x0 & ~(kTileSize - 1);
-  setup.origin_y = box.y0 & ~(kTileSize - 1);
-  const std::int64_t px = (std::int64_t{setup.origin_x} << 8) + 128;
-  const std::int64_t py = (std::int64_t{setup.origin_y} << 8) + 128;
+  // Pixels whose sample 256 i + 128 lies within [min, max] of the snapped vertices, clipped.
+  const D kInvPixel(1.0 / 256.0), kInvTile(1.0 / kTileSize), kTile(kTileSize);
+  const D min_x = xsimd::min(xsimd::min(x[0], x[1]), x[2]);
+  const D max_x = xsimd::max(xsimd::max(x[0], x[1]), x[2]);
+  const D min_y = xsimd::min(xsimd::min(y[0], y[1]), y[2]);
+  const D max_y = xsimd::max(xsimd::max(y[0], y[1]), y[2]);
+  const D box_x0 = xsimd::max(xsimd::floor((min_x + D(127.0)) * kInvPixel), D(clip.x0));
+  const D box_y0 = xsimd::max(xsimd::floor((min_y + D(127.0)) * kInvPixel), D(clip.y0));
+  const D box_x1 = xsimd::min(xsimd::floor((max_x - D(128.0)) * kInvPixel) + D(1.0), D(clip.x1));
+  const D box_y1 = xsimd::min(xsimd::floor((max_y - D(128.0)) * kInvPixel) + D(1.0), D(clip.y1));
+  const auto nonempty = box_x0 < box_x1 && box_y0 < box_y1;
+  const D origin_x = xsimd::floor(box_x0 * kInvTile) * kTile;
+  const D origin_y = xsimd::floor(box_y0 * kInvTile) * kTile;
   // The walk reaches one tile past the last in each direction, plus 7 samples within a tile.
-  const std::int64_t reach_x = ((box.x1 - 1 - setup.origin_x) | (kTileSize - 1)) + kTileSize;
-  const std::int64_t reach_y = ((box.y1 - 1 - setup.origin_y) | (kTileSize - 1)) + kTileSize;
-  bool narrow = true;
+  const D reach_x = xsimd::floor((box_x1 - D(1.0) - origin_x) * kInvTile) * kTile + D(15.0);
+  const D reach_y = xsimd::floor((box_y1 - D(1.0) - origin_y) * kInvTile) * kTile + D(15.0);
+  const D px = origin_x * D(256.0) + D(128.0), py = origin_y * D(256.0) + D(128.0);
+
+  alignas(64) double a[3][kLanes], b[3][kLanes], g[3][kLanes];
+  auto narrow = in_band;
   for (int e = 0; e < 3; ++e) {
-    const int a = e, b = e == 2 ? 0 : e + 1;
-    const std::int64_t ea = y[a] - y[b];
-    const std::int64_t eb = x[b] - x[a];
-    const bool top_left = ea > 0 || (ea == 0 && eb > 0);
-    const std::int64_t value = ea * (px - x[a]) + eb * (py - y[a]) - (top_left ? 0 : 1);
-    const std::int64_t g = value >> 8;  // floor division (arithmetic shift)
-    setup.edge[e] = {static_cast<std::int32_t>(ea), static_cast<std::int32_t>(eb), g};
-    const std::int64_t bound =
-        (g < 0 ? -g : g) + (ea < 0 ? -ea : ea) * reach_x + (eb < 0 ? -eb : eb) * reach_y;
-    narrow = narrow && bound <= INT32_MAX;
+    const int i = e, j = e == 2 ? 0 : e + 1;
+    const D ea = y[i] - y[j], eb = x[j] - x[i];
+    const auto top_left = ea > D(0.0) || (ea == D(0.0) && eb > D(0.0));
+    const D bias = xsimd::select(top_left, D(0.0), D(-1.0));
+    const D ge = xsimd::floor((ea * (px - x[i]) + eb * (py - y[i]) + bias) * kInvPixel);
+    narrow = narrow &&
+             xsimd::abs(ge) + xsimd::abs(ea) * reach_x + xsimd::abs(eb) * reach_y <= D(INT32_MAX);
+    ea.store_aligned(a[e]);
+    eb.store_aligned(b[e]);
+    ge.store_aligned(g[e]);
   }
-  setup.narrow = narrow;
-  return TriangleStatus::drawn;
+
+  alignas(64) double box[4][kLanes], origin[2][kLanes], flags[5][kLanes];
+  box_x0.store_aligned(box[0]);
+  box_y0.store_aligned(box[1]);
+  box_x1.store_aligned(box[2]);
+  box_y1.store_aligned(box[3]);
+  origin_x.store_aligned(origin[0]);
+  origin_y.store_aligned(origin[1]);
+  const D one(1.0), zero(0.0);
+  xsimd::select(in_band, one, zero).store_aligned(flags[0]);
+  xsimd::select(area2 == zero, one, zero).store_aligned(flags[1]);
+  const auto never = zero != zero;
+  const auto culled = cull == CullMode::clockwise           ? clockwise
+                      : cull == CullMode::counter_clockwise ? counter_clockwise
+                                                            : never;
+  xsimd::select(culled, one, zero).store_aligned(flags[2]);
+  xsimd::select(nonempty, one, zero).store_aligned(flags[3]);
+  xsimd::select(narrow, one, zero).store_aligned(flags[4]);
+
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    if (flags[0][l] == 0.0) {
+      statuses[l] =
+          snap_failure(in.x[0][l], in.y[0][l], in.x[1][l], in.y[1][l], in.x[2][l], in.y[2][l]);
+    } else if (flags[1][l] != 0.0) {
+      statuses[l] = TriangleStatus::culled_zero_area;
+    } else if (flags[2][l] != 0.0) {
+      statuses[l] = TriangleStatus::culled_winding;
+    } else {
+      statuses[l] = TriangleStatus::drawn;
+    }
+    visible[l] = statuses[l] == TriangleStatus::drawn && flags[3][l] != 0.0;
+    if (!visible[l]) continue;
+    TriangleSetup& setup = setups[l];
+    for (int e = 0; e < 3; ++e) {
+      setup.edge[e] = {static_cast<std::int32_t>(a[e][l]), static_cast<std::int32_t>(b[e][l]),
+                       static_cast<std::int64_t>(g[e][l])};
+    }
+    setup.box = {static_cast<std::int32_t>(box[0][l]), static_cast<std::int32_t>(box[1][l]),
+                 static_cast<std::int32_t>(box[2][l]), static_cast<std::int32_t>(box[3][l])};
+    setup.origin_x = static_cast<std::int32_t>(origin[0][l]);
+    setup.origin_y = static_cast<std::int32_t>(origin[1][l]);
+    setup.narrow = flags[4][l] != 0.0;
+  }
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE
