@@ -1,0 +1,84 @@
+// Coverage-only rasterization throughput: random triangles of one area per benchmark, a batch
+// per count_coverage() call, for every supported ISA and the reference.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "benchmarks.hpp"
+#include "edgewise/edgewise.hpp"
+#include "exact_area_triangles.hpp"
+
+namespace edgewise::bench {
+namespace {
+
+constexpr int kWidth = 1920, kHeight = 1080;
+constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0001;
+
+struct AreaCase {
+  int area;           // px^2 per triangle
+  std::size_t batch;  // triangles per count_coverage() call
+};
+// Batches take about 1-10 ms on the SIMD paths at the target rates, so per-call costs vanish
+// (the reference takes up to a few hundred ms per call).
+constexpr AreaCase kAreas[] = {{8, 65536}, {64, 32768}, {1000, 4096}, {200000, 128}};
+
+// With random placement the expected number of covered samples equals the area, so a batch
+// covers about area * batch pixels; a result far from that means the benchmark measures
+// something else (a culled batch, a broken kernel).
+constexpr double kPixelCountTolerance = 0.05;
+
+const std::vector<Vec2>& workload(const AreaCase& c) {
+  static std::map<int, std::vector<Vec2>> cache;
+  auto [it, inserted] = cache.try_emplace(c.area);
+  if (inserted)
+    it->second = workload::exact_area_triangles(c.batch, c.area, kWidth, kHeight, kSeed);
+  return it->second;
+}
+
+void coverage(benchmark::State& state, Isa isa, AreaCase c) {
+  const std::vector<Vec2>& vertices = workload(c);
+  const RasterTarget target{kWidth, kHeight, {}};
+  RasterOptions options;
+  options.isa = isa;
+
+  CoverageCount last;
+  for (auto _ : state) {
+    last = count_coverage(vertices, {}, target, options);
+    benchmark::DoNotOptimize(last.pixels);
+  }
+
+  const double expected = double(c.area) * double(c.batch);
+  if (last.report.isa != isa) {
+    state.SkipWithError("count_coverage ran another ISA than the one asked for");
+  } else if (last.report.drawn != c.batch) {
+    state.SkipWithError("not every triangle of the batch was drawn");
+  } else if (std::abs(double(last.pixels) - expected) > kPixelCountTolerance * expected) {
+    const std::string message = "covered " + std::to_string(last.pixels) +
+                                " pixels per batch, expected about " +
+                                std::to_string(std::uint64_t(expected));
+    state.SkipWithError(message.c_str());
+  }
+  const double iterations = double(state.iterations());
+  state.counters["triangles"] =
+      benchmark::Counter(double(c.batch) * iterations, benchmark::Counter::kIsRate);
+  state.counters["pixels"] =
+      benchmark::Counter(double(last.pixels) * iterations, benchmark::Counter::kIsRate);
+}
+
+}  // namespace
+
+void register_coverage_benchmarks() {
+  for (Isa isa : supported_isas()) {
+    for (const AreaCase& c : kAreas) {
+      const std::string name =
+          "Coverage/" + std::string(isa_name(isa)) + "/area:" + std::to_string(c.area);
+      benchmark::RegisterBenchmark(name.c_str(), coverage, isa, c)->Unit(benchmark::kMicrosecond);
+    }
+  }
+}
+
+}  // namespace edgewise::bench

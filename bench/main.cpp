@@ -1,0 +1,26 @@
+// edgewise-bench: every benchmark of the library in one binary.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "benchmarks.hpp"
+#include "edgewise/edgewise.hpp"
+
+int main(int argc, char** argv) {
+  edgewise::bench::register_coverage_benchmarks();
+
+  std::string supported;
+  for (edgewise::Isa isa : edgewise::supported_isas()) {
+    if (!supported.empty()) supported += ",";
+    supported += edgewise::isa_name(isa);
+  }
+  benchmark::AddCustomContext("edgewise_supported_isas", supported);
+  benchmark::AddCustomContext("edgewise_active_isa",
+                              std::string(edgewise::isa_name(edgewise::active_isa())));
+
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,393 @@
+// edgewise-coverage: lists the pixels each triangle covers as runs per row, so that edgewise can
+// be diffed against any other rasterizer, and its fast paths against the reference.
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "edgewise/edgewise.hpp"
+
+namespace {
+
+using namespace edgewise;
+
+constexpr std::string_view kUsage =
+    "usage: edgewise-coverage W H TRIANGLES [--isa NAME | --reference] [-o FILE]\n"
+    "       edgewise-coverage W H TRIANGLES --compare-isas\n"
+    "\n"
+    "TRIANGLES has one triangle per line, 'x0 y0 x1 y1 x2 y2' in pixels (origin top-left, y down,\n"
+    "pixel centers at +0.5); '#' starts a comment; '-' reads standard input. For each triangle\n"
+    "prints '<index> <pixel_count> <row>:<first_col>-<last_col> ...': inclusive runs of covered\n"
+    "pixels, rows ascending. Culled and invalid triangles print '<index> 0' and are reported on\n"
+    "standard error.\n"
+    "--compare-isas rasterizes with the reference and every ISA this CPU supports and exits with\n"
+    "status 1 if any output differs from the reference's.\n";
+
+// Bad input or arguments: the message names what was wrong and where.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string supported_isa_list() {
+  std::string list;
+  for (Isa isa : supported_isas()) {
+    if (!list.empty()) list += ", ";
+    list += isa_name(isa);
+  }
+  return list;
+}
+
+std::int32_t parse_dimension(std::string_view text, std::string_view what) {
+  std::int32_t value = -1;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || value < 0 ||
+      value > kMaxTargetSize) {
+    throw InputError(std::string(what) + " '" + std::string(text) + "' is not an integer in 0.." +
+                     std::to_string(kMaxTargetSize));
+  }
+  return value;
+}
+
+Isa parse_isa_option(std::string_view name) {
+  const std::optional<Isa> isa = parse_isa(name);
+  if (!isa) {
+    throw InputError("unknown ISA '" + std::string(name) + "'; this machine supports " +
+                     supported_isa_list());
+  }
+  if (!isa_supported(*isa)) {
+    throw InputError("ISA " + std::string(name) +
+                     " is not supported on this machine; it supports " + supported_isa_list());
+  }
+  return *isa;
+}
+
+// A float as written, or nullopt. NaN and infinity are accepted: they are valid input that the
+// rasterizer reports as a triangle error.
+std::optional<float> parse_coordinate(std::string_view text) {
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+  const char* first = text.data();
+  const char* last = first + text.size();
+  float value = 0.0f;
+  auto [end, ec] = std::from_chars(first, last, value);
+  if (ec == std::errc::result_out_of_range) {
+    // Subnormal results count as out of range for from_chars; they are fine coordinates.
+    double wide = 0.0;
+    const auto [wide_end, wide_ec] = std::from_chars(first, last, wide);
+    if (wide_ec != std::errc() || std::abs(wide) > std::numeric_limits<float>::max()) {
+      return std::nullopt;
+    }
+    value = static_cast<float>(wide);
+    end = wide_end;
+    ec = std::errc();
+  }
+  if (ec != std::errc() || end != last) return std::nullopt;
+  return value;
+}
+
+// Three vertices per triangle, in input order.
+std::vector<Vec2> read_triangles(std::istream& in, const std::string& name) {
+  std::vector<Vec2> vertices;
+  std::string line;
+  for (std::size_t line_number = 1; std::getline(in, line); ++line_number) {
+    std::string_view rest(line);
+    rest = rest.substr(0, rest.find('#'));
+    const auto where = [&] { return name + ":" + std::to_string(line_number) + ": "; };
+    std::vector<std::string_view> fields;
+    constexpr std::string_view kSpace = " \t\r\f\v";
+    while (true) {
+      const std::size_t begin = rest.find_first_not_of(kSpace);
+      if (begin == std::string_view::npos) break;
+      rest.remove_prefix(begin);
+      const std::size_t end = std::min(rest.find_first_of(kSpace), rest.size());
+      fields.push_back(rest.substr(0, end));
+      rest.remove_prefix(end);
+    }
+    if (fields.empty()) continue;
+    if (fields.size() != 6) {
+      throw InputError(where() + "expected 6 numbers 'x0 y0 x1 y1 x2 y2', found " +
+                       std::to_string(fields.size()) + " fields");
+    }
+    float xy[6];
+    for (std::size_t i = 0; i < 6; ++i) {
+      const std::optional<float> value = parse_coordinate(fields[i]);
+      if (!value) {
+        throw InputError(where() + "'" + std::string(fields[i]) +
+                         "' is not a number in the float range");
+      }
+      xy[i] = *value;
+    }
+    vertices.insert(vertices.end(), {{xy[0], xy[1]}, {xy[2], xy[3]}, {xy[4], xy[5]}});
+  }
+  if (in.bad()) throw InputError(name + ": read error: " + std::strerror(errno));
+  return vertices;
+}
+
+class TileCollector final : public CoverageSink {
+ public:
+  void consume(std::span<const TileCoverage> tiles) override {
+    tiles_.insert(tiles_.end(), tiles.begin(), tiles.end());
+  }
+  std::vector<TileCoverage>& tiles() { return tiles_; }
+
+ private:
+  std::vector<TileCoverage> tiles_;
+};
+
+// Appends ' <row>:<first>-<last>' (huge triangles have thousands of runs: no temporaries).
+void append_run(std::string& out, std::uint32_t row, std::uint32_t first, std::uint32_t last) {
+  const auto append_number = [&out](std::uint32_t value) {
+    char digits[std::numeric_limits<std::uint32_t>::digits10 + 1];
+    out.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+  };
+  out += ' ';
+  append_number(row);
+  out += ':';
+  append_number(first);
+  out += '-';
+  append_number(last);
+}
+
+// '<pixel_count> <row>:<first>-<last> ...' for one triangle's tiles, which must be sorted by
+// tile row, then tile column.
+std::string format_runs(std::span<const TileCoverage> tiles, std::uint64_t& pixel_count) {
+  std::string runs;
+  pixel_count = 0;
+  for (std::size_t row_begin = 0; row_begin < tiles.size();) {
+    std::size_t row_end = row_begin;
+    while (row_end < tiles.size() && tiles[row_end].tile_y == tiles[row_begin].tile_y)
+      ++row_end;
+    for (int y = 0; y < kTileSize; ++y) {
+      const std::uint32_t row = std::uint32_t{tiles[row_begin].tile_y} * kTileSize + y;
+      std::optional<std::uint32_t> first, last;
+      const auto flush = [&] {
+        if (!first) return;
+        append_run(runs, row, *first, *last);
+        pixel_count += *last - *first + 1;
+        first.reset();
+      };
+      for (std::size_t t = row_begin; t < row_end; ++t) {
+        std::uint32_t bits = (tiles[t].mask >> (y * kTileSize)) & 0xffu;
+        while (bits != 0) {
+          const int start = std::countr_zero(bits);
+          const int length = std::countr_one(bits >> start);
+          const std::uint32_t col = std::uint32_t{tiles[t].tile_x} * kTileSize + start;
+          if (!first || col != *last + 1) {
+            flush();
+            first = col;
+          }
+          last = col + length - 1;
+          bits &= ~(((1u << length) - 1u) << start);
+        }
+      }
+      flush();
+    }
+    row_begin = row_end;
+  }
+  return std::to_string(pixel_count) + runs;
+}
+
+struct TriangleCoverage {
+  std::size_t index;
+  TriangleStatus status;
+  std::string line;  // the output line without its newline
+};
+
+// Rasterizes triangles [first, first + count) of `vertices` with one ISA.
+std::vector<TriangleCoverage> cover(std::span<const Vec2> vertices, std::size_t first,
+                                    std::size_t count, const RasterTarget& target, Isa isa,
+                                    std::uint64_t& pixels) {
+  std::vector<TriangleStatus> statuses(count);
+  RasterOptions options;
+  options.isa = isa;
+  options.statuses = statuses;
+  TileCollector collector;
+  rasterize(vertices.subspan(3 * first, 3 * count), {}, target, options, collector);
+
+  std::vector<TileCoverage>& tiles = collector.tiles();
+  std::stable_sort(tiles.begin(), tiles.end(), [](const TileCoverage& a, const TileCoverage& b) {
+    if (a.triangle != b.triangle) return a.triangle < b.triangle;
+    if (a.tile_y != b.tile_y) return a.tile_y < b.tile_y;
+    return a.tile_x < b.tile_x;
+  });
+  std::vector<TriangleCoverage> result(count);
+  std::size_t next_tile = 0;
+  for (std::size_t t = 0; t < count; ++t) {
+    const std::size_t begin = next_tile;
+    while (next_tile < tiles.size() && tiles[next_tile].triangle == t)
+      ++next_tile;
+    std::uint64_t triangle_pixels = 0;
+    const std::string runs =
+        format_runs(std::span(tiles).subspan(begin, next_tile - begin), triangle_pixels);
+    pixels += triangle_pixels;
+    result[t] = {first + t, statuses[t], std::to_string(first + t) + ' ' + runs};
+  }
+  return result;
+}
+
+// Bounds memory for large inputs: tiles are kept for one chunk of triangles at a time.
+constexpr std::size_t kChunkTriangles = 256;
+
+void list_coverage(std::span<const Vec2> vertices, const RasterTarget& target, Isa isa,
+                   std::ostream& out) {
+  const std::size_t triangles = vertices.size() / 3;
+  std::uint64_t pixels = 0;
+  for (std::size_t first = 0; first < triangles; first += kChunkTriangles) {
+    const std::size_t count = std::min(kChunkTriangles, triangles - first);
+    for (const TriangleCoverage& c : cover(vertices, first, count, target, isa, pixels)) {
+      out << c.line << '\n';
+      if (c.status != TriangleStatus::drawn) {
+        std::cerr << "triangle " << c.index << ": " << describe(c.status) << '\n';
+      }
+    }
+  }
+}
+
+// Returns whether every supported ISA reproduces the reference's output exactly.
+bool compare_isas(std::span<const Vec2> vertices, const RasterTarget& target) {
+  const std::size_t triangles = vertices.size() / 3;
+  bool all_equal = true;
+  for (Isa isa : supported_isas()) {
+    if (isa == Isa::reference) continue;
+    std::uint64_t pixels = 0, reference_pixels = 0;
+    std::size_t mismatches = 0;
+    for (std::size_t first = 0; first < triangles; first += kChunkTriangles) {
+      const std::size_t count = std::min(kChunkTriangles, triangles - first);
+      const auto expected = cover(vertices, first, count, target, Isa::reference, reference_pixels);
+      const auto actual = cover(vertices, first, count, target, isa, pixels);
+      for (std::size_t t = 0; t < count; ++t) {
+        if (expected[t].status == actual[t].status && expected[t].line == actual[t].line) continue;
+        if (mismatches++ == 0) {
+          const Vec2* v = &vertices[3 * (first + t)];
+          std::cout << std::setprecision(9)  // enough digits to read back the same floats
+                    << isa_name(isa) << ": differs from the reference on triangle " << first + t
+                    << " (" << v[0].x << ' ' << v[0].y << ' ' << v[1].x << ' ' << v[1].y << ' '
+                    << v[2].x << ' ' << v[2].y << ")\n  reference: " << expected[t].line << " ["
+                    << describe(expected[t].status) << "]\n  " << isa_name(isa) << ": "
+                    << actual[t].line << " [" << describe(actual[t].status) << "]\n";
+        }
+      }
+    }
+    if (mismatches == 0) {
+      std::cout << isa_name(isa) << ": identical to the reference on " << triangles
+                << " triangles (" << pixels << " covered pixels)\n";
+    } else {
+      std::cout << isa_name(isa) << ": " << mismatches << " of " << triangles
+                << " triangles differ from the reference\n";
+      all_equal = false;
+    }
+  }
+  return all_equal;
+}
+
+struct Arguments {
+  RasterTarget target;
+  std::string triangles;
+  std::optional<Isa> isa;
+  std::optional<std::string> output;
+  bool compare = false;
+};
+
+Arguments parse_arguments(std::span<char*> args) {
+  Arguments parsed;
+  std::vector<std::string_view> positional;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string_view arg = args[i];
+    const auto value = [&]() -> std::string_view {
+      if (i + 1 == args.size()) throw InputError(std::string(arg) + " needs a value");
+      return args[++i];
+    };
+    const auto set_isa = [&](Isa isa) {
+      if (parsed.isa) throw InputError("give at most one of --isa and --reference");
+      parsed.isa = isa;
+    };
+    if (arg == "--isa") {
+      set_isa(parse_isa_option(value()));
+    } else if (arg == "--reference") {
+      set_isa(Isa::reference);
+    } else if (arg == "-o") {
+      parsed.output = std::string(value());
+    } else if (arg == "--compare-isas") {
+      parsed.compare = true;
+    } else if (arg.size() > 1 && arg[0] == '-' && !(arg[1] >= '0' && arg[1] <= '9')) {
+      throw InputError("unknown option " + std::string(arg));
+    } else {
+      positional.push_back(arg);
+    }
+  }
+  if (positional.size() != 3) {
+    throw InputError("expected W H TRIANGLES, got " + std::to_string(positional.size()) +
+                     " arguments");
+  }
+  if (parsed.compare && (parsed.isa || parsed.output)) {
+    throw InputError("--compare-isas takes no --isa, --reference or -o");
+  }
+  parsed.target.width = parse_dimension(positional[0], "width");
+  parsed.target.height = parse_dimension(positional[1], "height");
+  parsed.triangles = std::string(positional[2]);
+  return parsed;
+}
+
+int run(std::span<char*> args) {
+  for (std::string_view arg : args) {
+    if (arg == "-h" || arg == "--help") {
+      std::cout << kUsage;
+      return 0;
+    }
+  }
+  const Arguments arguments = parse_arguments(args);
+
+  std::vector<Vec2> vertices;
+  if (arguments.triangles == "-") {
+    vertices = read_triangles(std::cin, "<stdin>");
+  } else {
+    std::ifstream file(arguments.triangles);
+    if (!file) {
+      throw InputError(arguments.triangles + ": cannot open: " + std::strerror(errno));
+    }
+    vertices = read_triangles(file, arguments.triangles);
+  }
+
+  if (arguments.compare) return compare_isas(vertices, arguments.target) ? 0 : 1;
+
+  const Isa isa = arguments.isa.value_or(active_isa());
+  if (!arguments.output) {
+    list_coverage(vertices, arguments.target, isa, std::cout);
+    std::cout.flush();
+    if (!std::cout) throw InputError("cannot write to standard output");
+    return 0;
+  }
+  std::ofstream out(*arguments.output);
+  if (!out) throw InputError(*arguments.output + ": cannot create: " + std::strerror(errno));
+  list_coverage(vertices, arguments.target, isa, out);
+  out.close();
+  if (!out) throw InputError(*arguments.output + ": write error");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::span(argv + 1, argv + argc));
+  } catch (const InputError& e) {
+    std::cerr << "edgewise-coverage: " << e.what() << "\n(edgewise-coverage --help for usage)\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "edgewise-coverage: " << e.what() << '\n';
+    return 1;
+  }
+}
