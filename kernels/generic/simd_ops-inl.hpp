@@ -84,4 +84,109 @@ inline std::uint64_t sign_bits_8x8(const xsimd::batch<std::int32_t, Arch>* rows)
   }
 }
 
+// Eight values held as double batches, converted (exact integers in int32 range) to int32
+// batches: rows[8 / double lanes] -> out[8 / int32 lanes].
+template <class Arch>
+inline void to_int32_rows(const xsimd::batch<double, Arch>* rows,
+                          xsimd::batch<std::int32_t, Arch>* out) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    out[0] = _mm256_set_m128i(_mm256_cvttpd_epi32(rows[1]), _mm256_cvttpd_epi32(rows[0]));
+    return;
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    out[0] = _mm_unpacklo_epi64(_mm_cvttpd_epi32(rows[0]), _mm_cvttpd_epi32(rows[1]));
+    out[1] = _mm_unpacklo_epi64(_mm_cvttpd_epi32(rows[2]), _mm_cvttpd_epi32(rows[3]));
+    return;
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    for (int i = 0; i < 2; ++i) {
+      out[i] = vcombine_s32(vmovn_s64(vcvtq_s64_f64(rows[2 * i])),
+                            vmovn_s64(vcvtq_s64_f64(rows[2 * i + 1])));
+    }
+    return;
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "to_int32_rows: no implementation for this architecture");
+  }
+}
+
+// The low byte of each of eight int32 values (each in 0 .. 255), as bytes 0 .. 7 of a word.
+template <class Arch>
+inline std::uint64_t low_bytes(const xsimd::batch<std::int32_t, Arch>* rows) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    const __m256i v = rows[0];
+    const __m128i words =
+        _mm_packs_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+    return static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_packus_epi16(words, words)));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    const __m128i words = _mm_packs_epi32(rows[0], rows[1]);
+    return static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_packus_epi16(words, words)));
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    const int16x8_t words = vcombine_s16(vmovn_s32(rows[0]), vmovn_s32(rows[1]));
+    return vget_lane_u64(vreinterpret_u64_u8(vqmovun_s16(words)), 0);
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "low_bytes: no implementation for this architecture");
+  }
+}
+
+// Horizontal minimum and maximum of int32 lanes.
+template <class Arch>
+inline std::int32_t horizontal_min(xsimd::batch<std::int32_t, Arch> v) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    __m256i x = v;
+    x = _mm256_min_epi32(x, _mm256_permute2x128_si256(x, x, 1));
+    x = _mm256_min_epi32(x, _mm256_shuffle_epi32(x, 0x4E));
+    x = _mm256_min_epi32(x, _mm256_shuffle_epi32(x, 0xB1));
+    return _mm256_cvtsi256_si32(x);
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    using Ints = xsimd::batch<std::int32_t, Arch>;
+    v = xsimd::min(v, Ints(_mm_shuffle_epi32(v, 0x4E)));
+    v = xsimd::min(v, Ints(_mm_shuffle_epi32(v, 0xB1)));
+    return _mm_cvtsi128_si32(v);
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vminvq_s32(v);
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "horizontal_min: no implementation for this architecture");
+  }
+}
+template <class Arch>
+inline std::int32_t horizontal_max(xsimd::batch<std::int32_t, Arch> v) {
+  // max(v) = -1 - min(-1 - v) = ~min(~v): exact for every int32.
+  return ~horizontal_min<Arch>(~v);
+}
+
+// 2^n for lanes n in 0 .. 8, without variable shifts (SSE has none): the float whose
+// exponent field is n + 127 is exactly 2^n.
+template <class Arch>
+inline xsimd::batch<std::int32_t, Arch> power_of_two(xsimd::batch<std::int32_t, Arch> n) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  using Floats = xsimd::batch<float, Arch>;
+  const Ints exponent_bits = (n + Ints(127)) << 23;
+  return xsimd::batch_cast<std::int32_t>(xsimd::bitwise_cast<Floats>(exponent_bits));
+}
+
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -12,11 +12,10 @@
 #include <xsimd/xsimd.hpp>
 
 #include "simd_ops-inl.hpp"
+#include "tile_masks-inl.hpp"
 #include "triangle_setup-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
-
-static_assert(kTileSize == 8, "tile masks are 64-bit: 8 x 8 pixels");
 
 // Coverage of partial tiles, with the per-triangle lane constants hoisted.
 template <class Arch>
@@ -61,21 +60,10 @@ class TileEvaluator {
     return ~sign_bits_8x8<Arch>(any_outside);
   }
 
-  // Mask bits of rows first .. end - 1 (0 <= first < end <= 8).
-  static std::uint64_t row_bits(int first, int end) {
-    return (~std::uint64_t{0} << (8 * first)) & (~std::uint64_t{0} >> (8 * (kTileSize - end)));
-  }
-
  private:
   Lanes column_offset_[3][kStepsPerRow];
   Lanes row_step_[3];
 };
-
-// Mask bits of columns first .. end - 1 in every row (0 <= first < end <= 8).
-inline std::uint64_t column_bits(int first, int end) {
-  const std::uint64_t byte = (0xFFu << first) & (0xFFu >> (kTileSize - end));
-  return byte * 0x0101010101010101ull;
-}
 
 inline std::int32_t clamp_to_tile_range(std::int64_t g) {
   constexpr std::int64_t kLimit = std::int64_t{1} << 29;
@@ -134,8 +122,7 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
     const int end_column = box.x1 - tx < kTileSize ? box.x1 - tx : kTileSize;
     const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0]), clamp_to_tile_range(g[1]),
                                     clamp_to_tile_range(g[2])};
-    const std::uint64_t mask = evaluator.coverage(tile_g) &
-                               TileEvaluator<Arch>::row_bits(first_row, end_row) &
+    const std::uint64_t mask = evaluator.coverage(tile_g) & row_bits(first_row, end_row) &
                                column_bits(first_column, end_column);
     if (mask != 0) visitor.tile(static_cast<std::uint32_t>(tx / kTileSize), tile_y, mask);
   };
@@ -143,7 +130,7 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
   for (std::int32_t ty = setup.origin_y; ty < box.y1; ty += kTileSize) {
     const int first_row = box.y0 > ty ? box.y0 - ty : 0;
     const int end_row = box.y1 - ty < kTileSize ? box.y1 - ty : kTileSize;
-    const std::uint64_t rows = TileEvaluator<Arch>::row_bits(first_row, end_row);
+    const std::uint64_t rows = row_bits(first_row, end_row);
     const std::uint32_t tile_y = static_cast<std::uint32_t>(ty / kTileSize);
     Int g[3];
     for (int e = 0; e < 3; ++e)
@@ -223,9 +210,8 @@ void walk_block(const TriangleSetup& setup, Visitor& visitor) {
   for (int e = 0; e < 3; ++e) {
     g[e] = static_cast<std::int32_t>(setup.edge[e].g) + setup.edge[e].a * dx + setup.edge[e].b * dy;
   }
-  const std::uint64_t block = evaluator.coverage(g) &
-                              TileEvaluator<Arch>::row_bits(0, box.y1 - box.y0) &
-                              column_bits(0, box.x1 - box.x0);
+  const std::uint64_t block =
+      evaluator.coverage(g) & row_bits(0, box.y1 - box.y0) & column_bits(0, box.x1 - box.x0);
   // Block column c lands in column c + dx of the left tiles, c + dx - 8 of the right ones.
   const std::uint64_t left = (block & column_bits(0, kTileSize - dx)) << dx;
   const std::uint64_t right = dx == 0 ? 0 : (block >> (kTileSize - dx)) & column_bits(0, dx);
