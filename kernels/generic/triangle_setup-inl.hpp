@@ -95,6 +95,12 @@ inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip
     in_band = in_band && xsimd::abs(sx) <= kBand && xsimd::abs(sy) <= kBand && x[i] < kBand &&
               y[i] < kBand;
   }
+  // Lanes that failed are zeroed so that nothing below sees NaN, infinity or huge values
+  // (some ISAs convert to integers inside floor()); their status is decided apart.
+  for (int i = 0; i < 3; ++i) {
+    x[i] = xsimd::select(in_band, x[i], D(0.0));
+    y[i] = xsimd::select(in_band, y[i], D(0.0));
+  }
   // Twice the signed area; positive is clockwise on screen (y down).
   const D area2 = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
   const auto clockwise = area2 > D(0.0);

@@ -1,0 +1,126 @@
+// ISA dispatch: the lists of compiled and supported ISAs agree, and a forced ISA (ScopedIsa,
+// force_isa, RasterOptions::isa) is the one whose kernels run, as each kernel table reports the
+// ISA it was compiled for.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+#include <vector>
+
+#include "edgewise/raster.hpp"
+#include "isa_params.hpp"
+
+namespace edgewise::test {
+namespace {
+
+constexpr Isa kEveryIsa[] = {Isa::reference, Isa::sse2, Isa::sse4_1, Isa::avx2, Isa::neon};
+
+class NullSink final : public CoverageSink {
+ public:
+  void consume(std::span<const TileCoverage>) override {}
+};
+
+const std::vector<Vec2> kTriangle = {{0.5f, 0.5f}, {12.0f, 1.0f}, {3.0f, 9.0f}};
+const RasterTarget kTarget{16, 16, {}};
+
+// The ISA that ran a default-options call, as both entry points report it.
+Isa isa_that_runs() {
+  NullSink sink;
+  const Isa rasterized = rasterize(kTriangle, {}, kTarget, {}, sink).isa;
+  EXPECT_EQ(count_coverage(kTriangle, {}, kTarget, {}).report.isa, rasterized);
+  return rasterized;
+}
+
+TEST(IsaDispatch, CompiledAndSupportedListsAgree) {
+  const std::span<const Isa> compiled = compiled_isas();
+  ASSERT_FALSE(compiled.empty());
+  EXPECT_EQ(compiled.front(), Isa::reference);
+  EXPECT_TRUE(std::is_sorted(compiled.begin(), compiled.end()));  // worst first
+  EXPECT_EQ(std::adjacent_find(compiled.begin(), compiled.end()), compiled.end());
+#if defined(__x86_64__)
+  const std::vector<Isa> expected = {Isa::reference, Isa::sse2, Isa::sse4_1, Isa::avx2};
+#elif defined(__aarch64__)
+  const std::vector<Isa> expected = {Isa::reference, Isa::neon};
+#endif
+  EXPECT_EQ(std::vector<Isa>(compiled.begin(), compiled.end()), expected);
+
+  const std::vector<Isa> supported = supported_isas();
+  ASSERT_FALSE(supported.empty());
+  EXPECT_EQ(supported.front(), Isa::reference);
+  EXPECT_TRUE(std::includes(compiled.begin(), compiled.end(), supported.begin(), supported.end()));
+  for (Isa isa : kEveryIsa) {
+    const bool listed = std::find(supported.begin(), supported.end(), isa) != supported.end();
+    EXPECT_EQ(isa_supported(isa), listed) << isa_name(isa);
+  }
+  EXPECT_EQ(best_isa(), supported.back());
+}
+
+TEST(IsaDispatch, NamesRoundTrip) {
+  for (Isa isa : kEveryIsa)
+    EXPECT_EQ(parse_isa(isa_name(isa)), isa) << isa_name(isa);
+  EXPECT_EQ(parse_isa("sse4.1"), std::nullopt);
+  EXPECT_EQ(parse_isa(""), std::nullopt);
+  EXPECT_EQ(parse_isa("avx512"), std::nullopt);
+}
+
+TEST(IsaDispatch, DefaultIsTheBestIsaWithoutTheEnvironmentVariable) {
+  const char* forced = std::getenv("EDGEWISE_ISA");
+  if (forced != nullptr && *forced != '\0') GTEST_SKIP() << "EDGEWISE_ISA=" << forced << " is set";
+  EXPECT_EQ(active_isa(), best_isa());
+  EXPECT_EQ(isa_that_runs(), best_isa());
+}
+
+TEST(IsaDispatch, UnsupportedIsaCannotBeForced) {
+  const Isa before = active_isa();
+  int unsupported = 0;
+  for (Isa isa : kEveryIsa) {
+    if (isa_supported(isa)) continue;
+    ++unsupported;
+    EXPECT_THROW(force_isa(isa), std::invalid_argument) << isa_name(isa);
+    EXPECT_THROW(ScopedIsa{isa}, std::invalid_argument) << isa_name(isa);
+    EXPECT_EQ(active_isa(), before);
+  }
+  EXPECT_GT(unsupported, 0);  // no build has both x86 and AArch64 kernels
+}
+
+using IsaForcing = IsaTest;
+
+TEST_P(IsaForcing, ScopedIsaChoosesTheKernelsThatRun) {
+  const Isa before = active_isa();
+  {
+    const ScopedIsa scoped(isa());
+    EXPECT_EQ(active_isa(), isa());
+    EXPECT_EQ(isa_that_runs(), isa());
+    {
+      const ScopedIsa inner(Isa::reference);
+      EXPECT_EQ(isa_that_runs(), Isa::reference);
+    }
+    EXPECT_EQ(isa_that_runs(), isa());  // the outer choice is restored
+  }
+  EXPECT_EQ(active_isa(), before);
+}
+
+TEST_P(IsaForcing, ForceIsaUntilCleared) {
+  const Isa before = active_isa();
+  force_isa(isa());
+  EXPECT_EQ(isa_that_runs(), isa());
+  force_isa(std::nullopt);
+  EXPECT_EQ(active_isa(), before);
+}
+
+TEST_P(IsaForcing, OptionOverridesTheActiveIsa) {
+  for (Isa active : supported_isas()) {
+    const ScopedIsa scoped(active);
+    RasterOptions options;
+    options.isa = isa();
+    NullSink sink;
+    EXPECT_EQ(rasterize(kTriangle, {}, kTarget, options, sink).isa, isa());
+    EXPECT_EQ(count_coverage(kTriangle, {}, kTarget, options).report.isa, isa());
+  }
+}
+
+EDGEWISE_INSTANTIATE_PER_ISA(IsaForcing, every_isa());
+
+}  // namespace
+}  // namespace edgewise::test
