@@ -76,7 +76,7 @@ template <class Arch>
 inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip, CullMode cull,
                             TriangleSetup* setups, TriangleStatus* statuses, bool* visible) {
   using D = xsimd::batch<double, Arch>;
-  constexpr std::size_t kLanes = kSetupLanes<Arch>;
+  static constexpr std::size_t kLanes = kSetupLanes<Arch>;  // static: lambdas may use it
   const auto load = [](const float* v) {
     alignas(64) double lanes[kLanes];
     for (std::size_t i = 0; i < kLanes; ++i)

@@ -1,0 +1,103 @@
+# shellcheck shell=bash
+# Runs named, timed stages, stops at the first failure and prints a summary table
+# (sourced by tools/check).
+#
+# A stage is a shell function run in a subshell with `set -e`, so any failing command fails the
+# stage and its exports stay inside it. Stages report their tests through edgewise_ctest
+# (tools/lib/ctest.sh), which appends "passed skipped failed" lines to $EDGEWISE_STAGE_COUNTS.
+
+EDGEWISE_STAGE_ROWS=()
+EDGEWISE_TESTS_PASSED=0
+EDGEWISE_TESTS_SKIPPED=0
+EDGEWISE_TESTS_FAILED=0
+
+# Whether a stage is selected by EDGEWISE_CHECK_STAGES (comma- or space-separated; default all).
+edgewise_stage_selected() {
+  local wanted=${EDGEWISE_CHECK_STAGES:-all}
+  [[ $wanted == all ]] && return 0
+  [[ " ${wanted//,/ } " == *" $1 "* ]]
+}
+
+# Wall-clock microseconds (bash 5's EPOCHREALTIME without its decimal point).
+edgewise_now_us() {
+  echo "${EPOCHREALTIME/[.,]/}"
+}
+
+# Formats microseconds as m:ss.s.
+edgewise_format_duration() {
+  local tenths=$(($1 / 100000))
+  printf '%d:%02d.%d' $((tenths / 600)) $((tenths % 600 / 10)) $((tenths % 10))
+}
+
+EDGEWISE_CHECK_START=$(edgewise_now_us)
+
+edgewise_print_summary() {
+  local format='%-12s %-8s %8s %8s %8s %8s\n' row
+  echo
+  echo "==== Summary"
+  # shellcheck disable=SC2059 # the format is shared by every row
+  printf "$format" stage result time passed skipped failed
+  for row in "${EDGEWISE_STAGE_ROWS[@]}"; do
+    # shellcheck disable=SC2059,SC2086 # a row is six words
+    printf "$format" $row
+  done
+  local total=$(($(edgewise_now_us) - EDGEWISE_CHECK_START))
+  # shellcheck disable=SC2059
+  printf "$format" total "" "$(edgewise_format_duration "$total")" \
+    "$EDGEWISE_TESTS_PASSED" "$EDGEWISE_TESTS_SKIPPED" "$EDGEWISE_TESTS_FAILED"
+}
+
+# edgewise_run_stage NAME DESCRIPTION FUNCTION: runs FUNCTION if NAME is selected; on failure,
+# prints the summary and the final count line, and exits with the stage's status.
+edgewise_run_stage() {
+  local name=$1 description=$2 function=$3
+  if ! edgewise_stage_selected "$name"; then
+    EDGEWISE_STAGE_ROWS+=("$name not-run - - - -")
+    return 0
+  fi
+
+  echo
+  echo "==== [$name] $description"
+  local start status
+  start=$(edgewise_now_us)
+  EDGEWISE_STAGE_COUNTS=$(mktemp)
+  export EDGEWISE_STAGE_COUNTS
+  set +e
+  (
+    set -e
+    "$function"
+  )
+  status=$?
+  set -e
+
+  local elapsed=$(($(edgewise_now_us) - start)) passed=0 skipped=0 failed=0 p s f
+  while read -r p s f; do
+    passed=$((passed + p)) skipped=$((skipped + s)) failed=$((failed + f))
+  done <"$EDGEWISE_STAGE_COUNTS"
+  rm -f "$EDGEWISE_STAGE_COUNTS"
+  # A stage that fails outside ctest (a build error, a finding) counts as one failure.
+  if ((status != 0 && failed == 0)); then
+    failed=1
+  fi
+  EDGEWISE_TESTS_PASSED=$((EDGEWISE_TESTS_PASSED + passed))
+  EDGEWISE_TESTS_SKIPPED=$((EDGEWISE_TESTS_SKIPPED + skipped))
+  EDGEWISE_TESTS_FAILED=$((EDGEWISE_TESTS_FAILED + failed))
+
+  local result=ok duration
+  ((status == 0)) || result=FAILED
+  duration=$(edgewise_format_duration "$elapsed")
+  EDGEWISE_STAGE_ROWS+=("$name $result $duration $passed $skipped $failed")
+  echo "==== [$name] $result in $duration"
+  if ((status != 0)); then
+    edgewise_print_summary
+    echo "stage '$name' failed (exit status $status)"
+    echo "$EDGEWISE_TESTS_PASSED passed, $EDGEWISE_TESTS_FAILED failed"
+    exit "$status"
+  fi
+}
+
+# Prints the summary and the final count line of a run in which every stage passed.
+edgewise_finish_stages() {
+  edgewise_print_summary
+  echo "$EDGEWISE_TESTS_PASSED passed, $EDGEWISE_TESTS_FAILED failed"
+}
