@@ -6,9 +6,11 @@
 //   Snapped coordinates X, Y lie in [-2^23, 2^23) fixed (the +-32768 px guard band), and pixel
 //   samples 256 i + 128 lie in [128, 2^23) fixed (targets are at most 32768 px).
 //   Edge a->b:   A = Ya - Yb,  B = Xb - Xa            |A|, |B| < 2^24           (25-bit signed)
-//   Twice the area: (X1-X0)(Y2-Y0) - (Y1-Y0)(X2-X0)  |.| < 2^49                (int64)
+//   Twice the area: (X1-X0)(Y2-Y0) - (Y1-Y0)(X2-X0)  |.| < 2^49                (50 bits)
 //   Edge function at a sample P:
-//                E(P) = A (Px - Xa) + B (Py - Ya)    |Px - Xa| < 2^24, |E| < 2^49 (int64)
+//                E(P) = A (Px - Xa) + B (Py - Ya)    |Px - Xa| < 2^24, |E| < 2^49 (50 bits)
+//   Setup holds these in double lanes, which are exact for integers below 2^53 (see
+//   setup_triangles); the walks keep G in int64 or, where proven safe, int32.
 //   A sample is covered when E + bias >= 0 for all three edges, bias = 0 on top-left edges and
 //   -1 elsewhere (so that E = 0 counts only on top-left edges). Moving one pixel changes E by
 //   exactly 256 A (or 256 B), so with  G = floor((E + bias) / 256)  we have
@@ -22,7 +24,8 @@
 //   (plus one step past the last tile, and 7 samples into each tile) G is affine, so
 //   |G| <= |G(origin)| + |A| reach_x + |B| reach_y; when that bound fits in int32 the whole walk
 //   runs in int32 ("narrow": every triangle up to several hundred pixels across); otherwise it
-//   steps in int64 and clamps per tile ("wide").
+//   steps in int64 and clamps per tile ("wide"). The span walk (span_walk-inl.hpp) works from
+//   the same G in double, exact for the same reason.
 #pragma once
 
 #include <cmath>
