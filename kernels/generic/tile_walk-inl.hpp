@@ -115,16 +115,24 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
     min_offset[e] = (kTileSize - 1) * ((a < 0 ? a : 0) + (b < 0 ? b : 0));
   }
 
-  const auto evaluate = [&](const Int g[3], std::int32_t column, std::uint32_t tile_y,
-                            int first_row, int end_row) {
+  // Pixels of tile column `column` inside the box horizontally.
+  const auto column_clip = [&](std::int32_t column) {
     const std::int32_t tx = setup.origin_x + column * kTileSize;
-    const int first_column = box.x0 > tx ? box.x0 - tx : 0;
-    const int end_column = box.x1 - tx < kTileSize ? box.x1 - tx : kTileSize;
+    return column_bits(box.x0 > tx ? box.x0 - tx : 0,
+                       box.x1 - tx < kTileSize ? box.x1 - tx : kTileSize);
+  };
+  // Narrow boxes (the scan path) look their column masks up.
+  std::uint64_t scan_column_clip[kScanColumns];
+  for (std::int32_t column = 0; column < kScanColumns && column < columns; ++column) {
+    scan_column_clip[column] = column_clip(column);
+  }
+  const std::uint32_t first_tile_x = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
+  const auto evaluate = [&](const Int g[3], std::int32_t column, std::uint32_t tile_y,
+                            std::uint64_t clip) {
     const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0]), clamp_to_tile_range(g[1]),
                                     clamp_to_tile_range(g[2])};
-    const std::uint64_t mask = evaluator.coverage(tile_g) & row_bits(first_row, end_row) &
-                               column_bits(first_column, end_column);
-    if (mask != 0) visitor.tile(static_cast<std::uint32_t>(tx / kTileSize), tile_y, mask);
+    const std::uint64_t mask = evaluator.coverage(tile_g) & clip;
+    if (mask != 0) visitor.tile(first_tile_x + static_cast<std::uint32_t>(column), tile_y, mask);
   };
 
   for (std::int32_t ty = setup.origin_y; ty < box.y1; ty += kTileSize) {
@@ -137,20 +145,12 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
       g[e] = row_g[e];
 
     if (columns <= kScanColumns) {
+      // Few tiles: reject tile by tile and evaluate the rest (evaluating a tile that every edge
+      // accepts gives its mask all the same, and costs less than telling such tiles apart).
       for (std::int32_t column = 0; column < columns; ++column) {
         const bool rejected =
             (g[0] + max_offset[0] < 0) | (g[1] + max_offset[1] < 0) | (g[2] + max_offset[2] < 0);
-        if (!rejected) {
-          const bool accepted = (g[0] + min_offset[0] >= 0) & (g[1] + min_offset[1] >= 0) &
-                                (g[2] + min_offset[2] >= 0);
-          if (accepted && column >= inner_begin && column < inner_end) {
-            visitor.full_tiles(static_cast<std::uint32_t>(setup.origin_x / kTileSize + column),
-                               static_cast<std::uint32_t>(setup.origin_x / kTileSize + column + 1),
-                               tile_y, rows);
-          } else {
-            evaluate(g, column, tile_y, first_row, end_row);
-          }
-        }
+        if (!rejected) evaluate(g, column, tile_y, rows & scan_column_clip[column]);
         for (int e = 0; e < 3; ++e)
           g[e] += step_x[e];
       }
@@ -177,7 +177,7 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
       for (int e = 0; e < 3; ++e)
         tile_g[e] = g[e] + step_x[e] * begin;
       for (std::int32_t column = begin; column < full_begin; ++column) {
-        evaluate(tile_g, column, tile_y, first_row, end_row);
+        evaluate(tile_g, column, tile_y, rows & column_clip(column));
         for (int e = 0; e < 3; ++e)
           tile_g[e] += step_x[e];
       }
@@ -189,7 +189,7 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
       for (int e = 0; e < 3; ++e)
         tile_g[e] = g[e] + step_x[e] * full_end;
       for (std::int32_t column = full_end; column < end; ++column) {
-        evaluate(tile_g, column, tile_y, first_row, end_row);
+        evaluate(tile_g, column, tile_y, rows & column_clip(column));
         for (int e = 0; e < 3; ++e)
           tile_g[e] += step_x[e];
       }
