@@ -32,16 +32,6 @@ void expect_every_order_covers(Isa isa, const Vec2& a, const Vec2& b, const Vec2
   }
 }
 
-// Every pixel of [x0, x1) x [y0, y1), once.
-std::vector<Pixel> block(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1) {
-  std::vector<Pixel> pixels;
-  for (std::int32_t y = y0; y < y1; ++y) {
-    for (std::int32_t x = x0; x < x1; ++x)
-      pixels.push_back({x, y});
-  }
-  return pixels;
-}
-
 TEST_P(FillRule, TopAndLeftEdgesIncluded) {
   // Top edge y = 0.5, left edge x = 0.5, hypotenuse x + y = 5 (a right edge) excluded.
   expect_every_order_covers(isa(), {0.5f, 0.5f}, {4.5f, 0.5f}, {0.5f, 4.5f},

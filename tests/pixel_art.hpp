@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <initializer_list>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,17 @@ inline std::vector<Pixel> pixels_from_art(std::initializer_list<std::string_view
 }
 
 // The covered pixels equal `expected` (sorted; duplicates mean "covered that many times").
+// Every pixel of [x0, x1) x [y0, y1), once.
+inline std::vector<Pixel> block(std::int32_t x0, std::int32_t y0, std::int32_t x1,
+                                std::int32_t y1) {
+  std::vector<Pixel> pixels;
+  for (std::int32_t y = y0; y < y1; ++y) {
+    for (std::int32_t x = x0; x < x1; ++x)
+      pixels.push_back({x, y});
+  }
+  return pixels;
+}
+
 inline ::testing::AssertionResult covers_exactly(const std::vector<Pixel>& actual,
                                                  const std::vector<Pixel>& expected) {
   if (actual == expected) return ::testing::AssertionSuccess();

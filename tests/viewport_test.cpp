@@ -17,15 +17,6 @@ using Viewport = IsaTest;
 // Its hypotenuse is x + y = 200: it covers every sample of the targets below.
 const std::vector<Vec2> kHugeTriangle = {{-100.0f, -100.0f}, {300.0f, -100.0f}, {-100.0f, 300.0f}};
 
-std::vector<Pixel> block(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1) {
-  std::vector<Pixel> pixels;
-  for (std::int32_t y = y0; y < y1; ++y) {
-    for (std::int32_t x = x0; x < x1; ++x)
-      pixels.push_back({x, y});
-  }
-  return pixels;
-}
-
 RasterTarget with_scissor(std::int32_t width, std::int32_t height, PixelRect scissor) {
   RasterTarget target{width, height, {}};
   target.scissor = scissor;
