@@ -169,6 +169,25 @@ TEST_P(GuardBand, CornersOfTheLargestTarget) {
   EXPECT_EQ(run.tiles[0].mask, std::uint64_t{1} << 63);
 }
 
+TEST_P(GuardBand, NearlyHorizontalLongEdgesMatchTheReference) {
+  // Edges that rise 1/256 px over thousands of pixels: rows cross them thousands of columns
+  // apart, the regime where row intercepts need the most precision. run_checked compares with
+  // the reference. Slopes from 2^18 to 2^22 steps per step straddle the span walk's limit.
+  const RasterTarget target{4096, 64, {}};
+  const float step = 1.0f / 256.0f;
+  for (const float run : {1024.0f, 2048.0f, 4095.0f, 4096.0f, 8192.0f, 16384.0f}) {
+    for (const float y : {3.5f, 3.5f + step, 17.25f, 40.0f - step}) {
+      const Vec2 left{-3.0f, y}, right{run - 3.0f, y + step}, apex{700.0f, y + 20.0f};
+      for (const auto& tri : vertex_orders(left, right, apex)) {
+        const RasterRun result = draw(isa(), tri, target);
+        EXPECT_GT(covered_pixels(result).size(), 0u);
+      }
+      for (const auto& tri : vertex_orders(left, right, {700.0f, y - 20.0f}))
+        draw(isa(), tri, target);
+    }
+  }
+}
+
 EDGEWISE_INSTANTIATE_PER_ISA(GuardBand, every_isa());
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The few operations xsimd 8.1 lacks, per architecture: collecting lane sign bits.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
@@ -144,39 +145,26 @@ inline std::uint64_t low_bytes(const xsimd::batch<std::int32_t, Arch>* rows) {
   }
 }
 
-// Horizontal minimum and maximum of int32 lanes.
+// The horizontal minimum of each of four batches: out[i] = min over the lanes of v[i]. Two
+// rounds of interleaving leave, in every group of four lanes, lane i holding a partial minimum
+// of v[i] (zip_lo/zip_hi interleave within 128-bit halves on AVX2, which keeps that pattern).
 template <class Arch>
-inline std::int32_t horizontal_min(xsimd::batch<std::int32_t, Arch> v) {
-#if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    __m256i x = v;
-    x = _mm256_min_epi32(x, _mm256_permute2x128_si256(x, x, 1));
-    x = _mm256_min_epi32(x, _mm256_shuffle_epi32(x, 0x4E));
-    x = _mm256_min_epi32(x, _mm256_shuffle_epi32(x, 0xB1));
-    return _mm256_cvtsi256_si32(x);
-  } else
-#endif
-#if defined(__SSE2__)
-      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
-    using Ints = xsimd::batch<std::int32_t, Arch>;
-    v = xsimd::min(v, Ints(_mm_shuffle_epi32(v, 0x4E)));
-    v = xsimd::min(v, Ints(_mm_shuffle_epi32(v, 0xB1)));
-    return _mm_cvtsi128_si32(v);
-  } else
-#endif
-#if defined(__aarch64__)
-      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
-    return vminvq_s32(v);
-  } else
-#endif
-  {
-    static_assert(!sizeof(Arch), "horizontal_min: no implementation for this architecture");
+inline void horizontal_min4(const xsimd::batch<std::int32_t, Arch>* v, std::int32_t* out) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  using Pairs = xsimd::batch<std::int64_t, Arch>;
+  const Ints v01 = xsimd::min(xsimd::zip_lo(v[0], v[1]), xsimd::zip_hi(v[0], v[1]));
+  const Ints v23 = xsimd::min(xsimd::zip_lo(v[2], v[3]), xsimd::zip_hi(v[2], v[3]));
+  const Pairs p01 = xsimd::bitwise_cast<Pairs>(v01), p23 = xsimd::bitwise_cast<Pairs>(v23);
+  const Ints partial = xsimd::min(xsimd::bitwise_cast<Ints>(xsimd::zip_lo(p01, p23)),
+                                  xsimd::bitwise_cast<Ints>(xsimd::zip_hi(p01, p23)));
+  alignas(64) std::int32_t lanes[Ints::size];
+  partial.store_aligned(lanes);
+  for (std::size_t i = 0; i < 4; ++i) {
+    std::int32_t m = lanes[i];
+    for (std::size_t j = i + 4; j < Ints::size; j += 4)
+      m = m < lanes[j] ? m : lanes[j];
+    out[i] = m;
   }
-}
-template <class Arch>
-inline std::int32_t horizontal_max(xsimd::batch<std::int32_t, Arch> v) {
-  // max(v) = -1 - min(-1 - v) = ~min(~v): exact for every int32.
-  return ~horizontal_min<Arch>(~v);
 }
 
 // 2^n for lanes n in 0 .. 8, without variable shifts (SSE has none): the float whose

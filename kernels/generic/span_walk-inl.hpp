@@ -1,14 +1,19 @@
 // The span walk: a triangle's clipped box in strips of 8 pixel rows (one tile row). For each
 // row of a strip the three edge functions give the exact span of covered columns [L, R):
-// a left edge (a > 0) covers x from ceil(-G0 / a), a right edge (a < 0) up to floor(G0 / -a),
-// where G0 is the edge's G at the box's first tile column. A tile's mask is then read off the
-// eight spans, whatever edges cross it; tiles between the strip's spans are delivered whole.
+// G + a x >= 0 holds from x = ceil(t) on for a left edge (a > 0) and up to x < ceil(t) for a
+// right edge (a < 0), where t = -(G0 + 1/2) / a and G0 is the edge's G at the box's first tile
+// column. A tile's mask is then read off the eight spans, whatever edges cross it; tiles
+// between the strip's spans are delivered whole.
 //
 // Exactness: G0 is an integer below 2^42 and a a nonzero integer below 2^25, both exact in
-// double. An integer quotient divides exactly; any other lies at least 1/|a| >= 2^-25 from an
-// integer, while the division errs by at most |q| 2^-53 <= 2^-37 for |q| <= 2^16 (every
-// column of the guard band). Quotients beyond that are clamped to the box either way, so
-// ceil() and floor() of the double quotient are the exact integer bounds.
+// double. The half in the numerator keeps t off the integers: its distance to the nearest one
+// is at least 1 / (2 |a|) > 2^-26, so any approximation of t closer than that has the same
+// ceil(). No division is needed: with m = fl(-1/a) and the row slope s = fl(b m), a strip's
+// row k gets t_k = fl(fl((G0 + 1/2) m) + fl(k s)), whose error is at most
+// 2^-53 (2 |t_0| + 3 |k s| + |t_k|). The walk is used only where |b| < 2^20 |a|
+// (span_walk_is_exact), so |k s| < 2^23 for k <= 7; for |t_k| <= 2^17 then |t_0| < 2^24 and the
+// error is below 2^-53 * 2^26 = 2^-27. A larger |t_k| lies beyond every column of the guard
+// band (columns are below 2^16 from the first tile column) and is clamped to the box either way.
 #pragma once
 
 #include <cstddef>
@@ -33,9 +38,13 @@ class StripSpans {
   explicit StripSpans(const TriangleSetup& setup) {
     alignas(64) static constexpr double kRow[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
     for (int e = 0; e < 3; ++e) {
-      const Doubles b(setup.edge[e].b);
+      const EdgeSetup& edge = setup.edge[e];
+      // Horizontal edges step G itself (exact); the others step t (see above).
+      scale_[e] = edge.a != 0 ? -1.0 / edge.a : 1.0;
+      offset_[e] = edge.a != 0 ? 0.5 : 0.0;
+      const Doubles step(edge.a != 0 ? edge.b * scale_[e] : static_cast<double>(edge.b));
       for (std::size_t h = 0; h < kDoubleParts; ++h) {
-        row_offset_[e][h] = b * Doubles::load_aligned(kRow + h * Doubles::size);
+        row_term_[e][h] = step * Doubles::load_aligned(kRow + h * Doubles::size);
       }
     }
   }
@@ -51,16 +60,16 @@ class StripSpans {
       last[h] = Doubles(hi);
     }
     for (int e = 0; e < 3; ++e) {
-      const double a = setup.edge[e].a;
-      const Doubles start(g0[e]);
+      const std::int32_t a = setup.edge[e].a;
+      const Doubles start((g0[e] + offset_[e]) * scale_[e]);
       for (std::size_t h = 0; h < kDoubleParts; ++h) {
-        const Doubles g = start + row_offset_[e][h];
+        const Doubles t = start + row_term_[e][h];
         if (a > 0) {
-          first[h] = xsimd::max(first[h], xsimd::ceil(-g / Doubles(a)));
+          first[h] = xsimd::max(first[h], xsimd::ceil(t));
         } else if (a < 0) {
-          last[h] = xsimd::min(last[h], xsimd::floor(g / Doubles(-a)) + Doubles(1.0));
-        } else {  // horizontal: the whole row is in or out
-          last[h] = xsimd::select(g < Doubles(0.0), Doubles(lo), last[h]);
+          last[h] = xsimd::min(last[h], xsimd::ceil(t));
+        } else {  // horizontal: t is G, and the whole row is in or out
+          last[h] = xsimd::select(t < Doubles(0.0), Doubles(lo), last[h]);
         }
       }
     }
@@ -85,8 +94,20 @@ class StripSpans {
   }
 
  private:
-  Doubles row_offset_[3][kDoubleParts];  // b * row
+  double scale_[3], offset_[3];        // t at a strip's first row: (G0 + offset) * scale
+  Doubles row_term_[3][kDoubleParts];  // t at row k minus t at row 0
 };
+
+// The exactness argument above needs every non-horizontal edge to satisfy |b| < 2^20 |a|;
+// nearly horizontal edges (over 4096 px long for a 1/256 px rise) take the tile walk.
+inline bool span_walk_is_exact(const TriangleSetup& setup) {
+  for (const EdgeSetup& edge : setup.edge) {
+    const std::int64_t a = edge.a < 0 ? -std::int64_t{edge.a} : edge.a;
+    const std::int64_t b = edge.b < 0 ? -std::int64_t{edge.b} : edge.b;
+    if (a != 0 && b >= a << 20) return false;
+  }
+  return true;
+}
 
 // Calls visitor.tile() for partial tiles and visitor.full_tiles() for runs of whole tiles, in
 // row order, like walk_tiles().
@@ -109,27 +130,24 @@ void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
     const int end_row = box.y1 - ty < kTileSize ? box.y1 - ty : kTileSize;
     const std::uint64_t rows = row_bits(first_row, end_row);
     spans.compute(setup, g0, lo, hi, begin, end);
-    // Over the rows inside the box: the union of the spans, and their intersection.
+    // Over the rows inside the box: the union of the spans, and their intersection. Spans lie
+    // in [lo, hi], far inside +-kUnused, so negated ends take maxima as minima.
     using Ints = typename Spans::Ints;
-    Ints union_begin_lanes(INT32_MAX), union_end_lanes(INT32_MIN);
-    Ints common_begin_lanes(INT32_MIN), common_end_lanes(INT32_MAX);
+    constexpr std::int32_t kUnused = 1 << 30;
+    Ints bounds[4] = {Ints(kUnused), Ints(kUnused), Ints(kUnused), Ints(kUnused)};
     for (std::size_t h = 0; h < Spans::kIntParts; ++h) {
       const Ints row = Ints::load_aligned(kRowIndex + h * Ints::size);
       const auto in_box = row >= Ints(first_row) && row < Ints(end_row);
       const auto covered = in_box && begin[h] < end[h];
-      union_begin_lanes =
-          xsimd::min(union_begin_lanes, xsimd::select(covered, begin[h], Ints(INT32_MAX)));
-      union_end_lanes =
-          xsimd::max(union_end_lanes, xsimd::select(covered, end[h], Ints(INT32_MIN)));
-      common_begin_lanes =
-          xsimd::max(common_begin_lanes, xsimd::select(in_box, begin[h], Ints(INT32_MIN)));
-      common_end_lanes =
-          xsimd::min(common_end_lanes, xsimd::select(in_box, end[h], Ints(INT32_MAX)));
+      bounds[0] = xsimd::min(bounds[0], xsimd::select(covered, begin[h], Ints(kUnused)));
+      bounds[1] = xsimd::min(bounds[1], xsimd::select(covered, -end[h], Ints(kUnused)));
+      bounds[2] = xsimd::min(bounds[2], xsimd::select(in_box, -begin[h], Ints(kUnused)));
+      bounds[3] = xsimd::min(bounds[3], xsimd::select(in_box, end[h], Ints(kUnused)));
     }
-    const std::int32_t union_begin = horizontal_min<Arch>(union_begin_lanes);
-    const std::int32_t union_end = horizontal_max<Arch>(union_end_lanes);
-    const std::int32_t common_begin = horizontal_max<Arch>(common_begin_lanes);
-    const std::int32_t common_end = horizontal_min<Arch>(common_end_lanes);
+    std::int32_t minima[4];
+    horizontal_min4<Arch>(bounds, minima);
+    const std::int32_t union_begin = minima[0], union_end = -minima[1];
+    const std::int32_t common_begin = -minima[2], common_end = minima[3];
     if (union_begin < union_end) {
       const std::int32_t tile_begin = union_begin >> 3, tile_end = (union_end + 7) >> 3;
       std::int32_t full_begin = (common_begin + 7) >> 3, full_end = common_end >> 3;
