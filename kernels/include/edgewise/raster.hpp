@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "edgewise/isa.hpp"
+#include "edgewise/vector.hpp"
 
 namespace edgewise {
 
@@ -20,10 +21,6 @@ inline constexpr int kSubpixelBits = 8;
 inline constexpr int kGuardBand = 32768;
 // Targets are at most this many pixels wide and high (every pixel lies inside the guard band).
 inline constexpr int kMaxTargetSize = kGuardBand;
-
-struct Vec2 {
-  float x, y;
-};
 
 // Half-open pixel rectangle [x0, x1) x [y0, y1).
 struct PixelRect {
