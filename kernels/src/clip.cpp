@@ -1,0 +1,199 @@
+#include "edgewise/clip.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "edgewise/raster.hpp"
+
+// Why kGuardBandMargin = 1/16 px is enough. Let G = kGuardBand - kGuardBandMargin and u = 2^-24.
+// Every output vertex satisfies x <= fl(x_max * w) exactly (clip_triangle clamps to the same
+// float product its inside test uses), with w > 0. to_screen() then rounds 1/w, x * (1/w), + 1
+// and * width/2; with the rounding of x_max itself and of x_max * w that is six roundings of
+// relative size u, all on same-signed quantities, so sx <= G (1 + u)^6 < G + 6.01 u 2^15
+// = G + 0.0118 px; the same holds for -sx, sy and -sy. Snapping to 1/256 px adds at most
+// 2^-9 = 0.002 px. Snapped vertices therefore stay within kGuardBand - 0.048 px of the centre on
+// both sides, inside [-kGuardBand, kGuardBand). And 1/16 < 0.5: on a kMaxTargetSize target the
+// last pixel center, kGuardBand - 0.5, stays inside the band.
+static_assert(edgewise::kGuardBandMargin > 0.0118f + 0.002f && edgewise::kGuardBandMargin < 0.5f);
+
+namespace edgewise {
+namespace {
+
+enum Plane : int { kNear, kFar, kXMin, kXMax, kYMin, kYMax };
+
+// Outcode bits: the six clipping planes, then the frustum's sides (tested, never clipped).
+constexpr unsigned kClipPlaneBits = (1u << kClipPlaneCount) - 1;
+constexpr unsigned kLeftBit = 1u << 6, kRightBit = 1u << 7, kBottomBit = 1u << 8, kTopBit = 1u << 9;
+constexpr unsigned kFrustumBits =
+    (1u << kNear) | (1u << kFar) | kLeftBit | kRightBit | kBottomBit | kTopBit;
+
+// Signed distance to a plane, >= 0 inside. Each guard-band bound is the float product
+// fl(bound * w); the final clamp uses the same product, so "inside" means the same thing to the
+// classification, the intersections and the clamp. fl(a - b) >= 0 exactly when a >= b.
+float distance(const Vec4& p, int plane, const GuardBandPlanes& g) {
+  switch (plane) {
+    case kNear:
+      return p.z;
+    case kFar:
+      return p.w - p.z;
+    case kXMin:
+      return p.x - g.x_min * p.w;
+    case kXMax:
+      return g.x_max * p.w - p.x;
+    case kYMin:
+      return p.y - g.y_min * p.w;
+    default:
+      return g.y_max * p.w - p.y;
+  }
+}
+
+unsigned outcode(const Vec4& p, const GuardBandPlanes& g) {
+  unsigned code = 0;
+  for (int plane = 0; plane < kClipPlaneCount; ++plane) {
+    if (!(distance(p, plane, g) >= 0.0f)) code |= 1u << plane;
+  }
+  if (p.x < -p.w) code |= kLeftBit;
+  if (p.x > p.w) code |= kRightBit;
+  if (p.y < -p.w) code |= kBottomBit;
+  if (p.y > p.w) code |= kTopBit;
+  return code;
+}
+
+float lerp(float a, float b, float t) {
+  return a + t * (b - a);
+}
+
+// The point where the edge from `in` (d_in >= 0) to `out` (d_out < 0) crosses the plane.
+// Crack-free: the computation always starts from the inside endpoint, whichever way the polygon
+// walks the edge, and reads nothing but the two endpoints. Two triangles sharing the edge hold
+// bit-identical endpoints (original vertices, or earlier crossings computed the same way), so they
+// get bit-identical crossings. t = d_in / (d_in - d_out) lies in [0, 1], the denominator is > 0,
+// and starting from the inside end keeps the error small when `out` is far away.
+ClipVertex crossing(const ClipVertex& in, float d_in, const ClipVertex& out, float d_out) {
+  const float t = d_in / (d_in - d_out);
+  const Vec4& a = in.position;
+  const Vec4& b = out.position;
+  return {{lerp(a.x, b.x, t), lerp(a.y, b.y, t), lerp(a.z, b.z, t), lerp(a.w, b.w, t)},
+          lerp(in.b0, out.b0, t),
+          lerp(in.b1, out.b1, t),
+          lerp(in.b2, out.b2, t)};
+}
+
+float clamp(float v, float lo, float hi) {
+  return v < lo ? lo : (v > hi ? hi : v);
+}
+
+}  // namespace
+
+GuardBandPlanes guard_band_planes(const Viewport& viewport) {
+  if (viewport.width < 1 || viewport.width > kMaxTargetSize || viewport.height < 1 ||
+      viewport.height > kMaxTargetSize) {
+    throw std::invalid_argument("edgewise: viewport size outside 1 .. kMaxTargetSize");
+  }
+  const double band = kGuardBand - static_cast<double>(kGuardBandMargin);
+  const double x_span = 2.0 * band / viewport.width;
+  const double y_span = 2.0 * band / viewport.height;
+  return {static_cast<float>(-(1.0 + x_span)), static_cast<float>(x_span - 1.0),
+          static_cast<float>(1.0 - y_span), static_cast<float>(1.0 + y_span)};
+}
+
+ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
+                             const GuardBandPlanes& planes) {
+  ClippedPolygon result;
+  const Vec4* input[3] = {&p0, &p1, &p2};
+
+  // Reject bad input before any arithmetic.
+  for (const Vec4* p : input) {
+    for (float c : {p->x, p->y, p->z, p->w}) {
+      if (!std::isfinite(c)) {
+        result.status = ClipStatus::error_non_finite;
+        return result;
+      }
+    }
+  }
+  for (const Vec4* p : input) {
+    for (float c : {p->x, p->y, p->z, p->w}) {
+      if (std::fabs(c) > kMaxClipCoordinate) {
+        result.status = ClipStatus::error_out_of_range;
+        return result;
+      }
+    }
+  }
+
+  // Trivial reject and trivial accept from the outcodes.
+  const unsigned c0 = outcode(p0, planes), c1 = outcode(p1, planes), c2 = outcode(p2, planes);
+  if ((c0 & c1 & c2 & kFrustumBits) != 0) {
+    result.status = ClipStatus::outside;
+    return result;
+  }
+  ClipVertex buffers[2][kMaxClipVertices];
+  buffers[0][0] = {p0, 1.0f, 0.0f, 0.0f};
+  buffers[0][1] = {p1, 0.0f, 1.0f, 0.0f};
+  buffers[0][2] = {p2, 0.0f, 0.0f, 1.0f};
+  int count = 3;
+  int current = 0;
+  const bool needs_clipping = ((c0 | c1 | c2) & kClipPlaneBits) != 0;
+
+  if (needs_clipping) {
+    for (int plane = 0; plane < kClipPlaneCount; ++plane) {
+      const ClipVertex* in = buffers[current];
+      float d[kMaxClipVertices];
+      bool any_outside = false;
+      int sign_changes = 0;
+      for (int i = 0; i < count; ++i) {
+        d[i] = distance(in[i].position, plane, planes);
+        any_outside = any_outside || d[i] < 0.0f;
+      }
+      // A plane no vertex is outside of leaves the polygon as it is: skipping it changes nothing.
+      if (!any_outside) continue;
+      for (int i = 0; i < count; ++i) {
+        const int next = i + 1 == count ? 0 : i + 1;
+        sign_changes += (d[i] >= 0.0f) != (d[next] >= 0.0f);
+      }
+      // A convex polygon crosses a plane at most twice; more means its vertices are within
+      // rounding of one line, and the output could outgrow the buffers.
+      if (sign_changes > 2) {
+        result.status = ClipStatus::culled_degenerate;
+        return result;
+      }
+      ClipVertex* out = buffers[current ^ 1];
+      int out_count = 0;
+      for (int i = 0; i < count; ++i) {
+        const int next = i + 1 == count ? 0 : i + 1;
+        const bool inside = d[i] >= 0.0f;
+        if (inside) out[out_count++] = in[i];
+        if (inside != (d[next] >= 0.0f)) {
+          out[out_count++] = inside ? crossing(in[i], d[i], in[next], d[next])
+                                    : crossing(in[next], d[next], in[i], d[i]);
+        }
+      }
+      count = out_count;
+      current ^= 1;
+      if (count < 3) {
+        result.status = ClipStatus::outside;
+        return result;
+      }
+    }
+  }
+
+  for (int i = 0; i < count; ++i) {
+    ClipVertex v = buffers[current][i];
+    Vec4& p = v.position;
+    if (!(p.w > 0.0f)) {
+      result.status = ClipStatus::culled_degenerate;
+      return result;
+    }
+    // Crossings may overshoot a plane by a rounding; pull them back onto it so the guard-band
+    // bound (see the top of this file) and 0 <= depth <= 1 hold exactly. Inside vertices, and so
+    // every vertex of an unclipped triangle, are left bit for bit unchanged.
+    p.x = clamp(p.x, planes.x_min * p.w, planes.x_max * p.w);
+    p.y = clamp(p.y, planes.y_min * p.w, planes.y_max * p.w);
+    p.z = clamp(p.z, 0.0f, p.w);
+    result.vertices[i] = v;
+  }
+  result.count = static_cast<std::uint8_t>(count);
+  result.status = needs_clipping ? ClipStatus::clipped : ClipStatus::inside;
+  return result;
+}
+
+}  // namespace edgewise
