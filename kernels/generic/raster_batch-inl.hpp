@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "../src/kernel_table.hpp"
+#include "shade-inl.hpp"
 #include "span_walk-inl.hpp"
 #include "tile_walk-inl.hpp"
 
@@ -66,7 +67,7 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
       if (status == TriangleStatus::drawn) {
         ++report.drawn;
         if (!visible[l]) continue;
-        visitor.triangle = static_cast<std::uint32_t>(t);
+        visitor.begin_triangle(static_cast<std::uint32_t>(t));
         const TriangleSetup& setup = setups[l];
         const PixelRect& box = setup.box;
         if (setup.narrow && box.x1 - box.x0 <= kTileSize && box.y1 - box.y0 <= kTileSize) {
@@ -91,8 +92,8 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
 }
 
 struct CountingVisitor {
-  std::uint32_t triangle = 0;
   std::uint64_t pixels = 0;
+  void begin_triangle(std::uint32_t) {}
   void tile(std::uint32_t, std::uint32_t, std::uint64_t mask) {
     pixels += static_cast<std::uint64_t>(std::popcount(mask));
   }
@@ -106,6 +107,7 @@ class BufferingVisitor {
  public:
   explicit BufferingVisitor(CoverageSink& sink) : sink_(sink) {}
   std::uint32_t triangle = 0;
+  void begin_triangle(std::uint32_t t) { triangle = t; }
   void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
     buffer_[count_++] = {triangle, static_cast<std::uint16_t>(tile_x),
                          static_cast<std::uint16_t>(tile_y), mask};
@@ -141,8 +143,33 @@ void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
   pixels += visitor.pixels;
 }
 
+template <InterpolationMethod Method>
+void shade_with(const detail::ShadeBatch& batch, RasterReport& report,
+                detail::ShadeCounts& counts) {
+  ShadingVisitor<Arch, Method> visitor(batch);
+  run_batch(batch.coverage, visitor, report);
+  visitor.add_counts(counts);
+}
+
+void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
+  switch (batch.method) {
+    case InterpolationMethod::nearest_vertex:
+      return shade_with<InterpolationMethod::nearest_vertex>(batch, report, counts);
+    case InterpolationMethod::inverse_distance:
+      return shade_with<InterpolationMethod::inverse_distance>(batch, report, counts);
+    case InterpolationMethod::subtriangle_areas:
+      return shade_with<InterpolationMethod::subtriangle_areas>(batch, report, counts);
+    case InterpolationMethod::edge_functions:
+      return shade_with<InterpolationMethod::edge_functions>(batch, report, counts);
+    case InterpolationMethod::scanline:
+      return shade_with<InterpolationMethod::scanline>(batch, report, counts);
+    case InterpolationMethod::plane_equations:
+      return shade_with<InterpolationMethod::plane_equations>(batch, report, counts);
+  }
+}
+
 const detail::KernelTable& kernel_table() {
-  static const detail::KernelTable table{EDGEWISE_ISA_ENUM, &rasterize, &count_coverage};
+  static const detail::KernelTable table{EDGEWISE_ISA_ENUM, &rasterize, &count_coverage, &shade};
   return table;
 }
 

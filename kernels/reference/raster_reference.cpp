@@ -104,12 +104,11 @@ void for_each_tile(const SnappedTriangle& t, const PixelRect& clip,
 
 }  // namespace edgewise::reference
 
-namespace edgewise::isa_reference {
-namespace {
+namespace edgewise::reference {
 
-// Runs the reference over a batch; `tile` receives (triangle, tile_x, tile_y, mask).
-template <class TileFn>
-void run_batch(const detail::TriangleBatch& batch, RasterReport& report, TileFn&& tile) {
+void for_each_drawn_triangle(
+    const detail::TriangleBatch& batch, RasterReport& report,
+    const std::function<void(std::size_t, const SnappedTriangle&)>& triangle) {
   report.triangles += batch.triangle_count;
   for (std::size_t t = 0; t < batch.triangle_count; ++t) {
     std::size_t idx[3] = {3 * t, 3 * t + 1, 3 * t + 2};
@@ -118,18 +117,15 @@ void run_batch(const detail::TriangleBatch& batch, RasterReport& report, TileFn&
         idx[i] = batch.indices[3 * t + i];
     }
     TriangleStatus status = TriangleStatus::error_bad_index;
-    reference::SnappedTriangle snapped{};
+    SnappedTriangle snapped{};
     if (idx[0] < batch.vertex_count && idx[1] < batch.vertex_count && idx[2] < batch.vertex_count) {
-      status = reference::snap_and_classify(batch.vertices[idx[0]], batch.vertices[idx[1]],
-                                            batch.vertices[idx[2]], batch.cull, snapped);
+      status = snap_and_classify(batch.vertices[idx[0]], batch.vertices[idx[1]],
+                                 batch.vertices[idx[2]], batch.cull, snapped);
     }
     if (batch.statuses != nullptr) batch.statuses[t] = status;
     if (status == TriangleStatus::drawn) {
       ++report.drawn;
-      reference::for_each_tile(snapped, batch.clip,
-                               [&](std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
-                                 tile(static_cast<std::uint32_t>(t), tx, ty, mask);
-                               });
+      triangle(t, snapped);
     } else if (is_error(status)) {
       if (report.errors++ == 0) {
         report.first_error_triangle = t;
@@ -139,6 +135,23 @@ void run_batch(const detail::TriangleBatch& batch, RasterReport& report, TileFn&
       ++report.culled;
     }
   }
+}
+
+}  // namespace edgewise::reference
+
+namespace edgewise::isa_reference {
+namespace {
+
+// Runs the reference over a batch; `tile` receives (triangle, tile_x, tile_y, mask).
+template <class TileFn>
+void run_batch(const detail::TriangleBatch& batch, RasterReport& report, TileFn&& tile) {
+  reference::for_each_drawn_triangle(
+      batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
+        reference::for_each_tile(snapped, batch.clip,
+                                 [&](std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
+                                   tile(static_cast<std::uint32_t>(t), tx, ty, mask);
+                                 });
+      });
 }
 
 void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report) {
@@ -161,7 +174,8 @@ void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
 }  // namespace
 
 const detail::KernelTable& kernel_table() {
-  static const detail::KernelTable table{Isa::reference, &rasterize, &count_coverage};
+  static const detail::KernelTable table{Isa::reference, &rasterize, &count_coverage,
+                                         &reference::shade};
   return table;
 }
 

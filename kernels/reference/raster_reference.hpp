@@ -11,6 +11,12 @@
 
 #include "edgewise/raster.hpp"
 
+namespace edgewise::detail {
+struct TriangleBatch;
+struct ShadeBatch;
+struct ShadeCounts;
+}  // namespace edgewise::detail
+
 namespace edgewise::reference {
 
 // A triangle after snapping to 1/256 px, in its input order (not re-wound).
@@ -31,5 +37,15 @@ PixelRect candidate_pixels(const SnappedTriangle& tri, const PixelRect& clip);
 // Delivers the triangle's tile masks row by row, as the fast paths do.
 void for_each_tile(const SnappedTriangle& tri, const PixelRect& clip,
                    const std::function<void(std::uint32_t, std::uint32_t, std::uint64_t)>& tile);
+
+// Validates every triangle of a batch in order, counting statuses into the report (and the
+// batch's status array) as the fast paths do, and calls `triangle` for each drawn one.
+void for_each_drawn_triangle(
+    const detail::TriangleBatch& batch, RasterReport& report,
+    const std::function<void(std::size_t, const SnappedTriangle&)>& triangle);
+
+// The shading reference (shade_reference.cpp): depth test, double-precision interpolation and
+// shading of every covered sample.
+void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
 
 }  // namespace edgewise::reference

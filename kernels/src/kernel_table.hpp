@@ -19,10 +19,14 @@ struct TriangleBatch {
   TriangleStatus* statuses;  // null or triangle_count entries
 };
 
+struct ShadeBatch;
+struct ShadeCounts;
+
 struct KernelTable {
   Isa isa;
   void (*rasterize)(const TriangleBatch& batch, CoverageSink& sink, RasterReport& report);
   void (*count_coverage)(const TriangleBatch& batch, RasterReport& report, std::uint64_t& pixels);
+  void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
 };
 
 const KernelTable& kernel_table(Isa isa);

@@ -1,5 +1,11 @@
 // The whole public API.
 #pragma once
 
+#include "edgewise/camera.hpp"
+#include "edgewise/clip.hpp"
+#include "edgewise/framebuffer.hpp"
+#include "edgewise/interpolation.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/raster.hpp"
+#include "edgewise/render.hpp"
+#include "edgewise/vector.hpp"

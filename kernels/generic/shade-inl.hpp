@@ -1,0 +1,210 @@
+// Shading of covered tiles: depth test, attribute interpolation and colour writes, 8 pixels per
+// AVX2 step (4 with SSE and NEON), into the Framebuffer's tiled storage. The tile walks deliver
+// masks to ShadingVisitor exactly as they deliver them to the coverage visitors.
+//
+// Per row of a tile: depth from the shared plane formula (kernels/src/depth_plane.hpp, the same
+// float operations as the reference, so outcomes match it exactly), the depth compare, then the
+// interpolation method's weights, the perspective step when w varies across the triangle, and
+// the shading model. Writes are blends under the covered-and-passed lane mask: no branch per
+// pixel. Rows without covered samples are skipped.
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include <xsimd/xsimd.hpp>
+
+#include "../src/depth_plane.hpp"
+#include "../src/shade_batch.hpp"
+#include "interpolation-inl.hpp"
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+
+template <class Arch, InterpolationMethod Method>
+class ShadingVisitor {
+ public:
+  using Floats = xsimd::batch<float, Arch>;
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  static constexpr std::size_t kLanes = Floats::size;
+  static constexpr std::size_t kParts = kTileSize / kLanes;
+
+  explicit ShadingVisitor(const detail::ShadeBatch& batch)
+      : batch_(batch),
+        interpolator_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, 0.0, 0.0),
+        divide_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}) {}
+
+  std::uint32_t triangle = 0;
+
+  void begin_triangle(std::uint32_t t) {
+    triangle = t;
+    std::size_t corner[3] = {3 * std::size_t{t}, 3 * std::size_t{t} + 1, 3 * std::size_t{t} + 2};
+    if (batch_.coverage.indices != nullptr) {
+      for (int i = 0; i < 3; ++i)
+        corner[i] = batch_.coverage.indices[corner[i]];
+    }
+    Vec2 p[3];
+    float z[3];
+    ScreenTriangle screen;
+    for (int i = 0; i < 3; ++i) {
+      p[i] = batch_.coverage.vertices[corner[i]];
+      z[i] = batch_.depth[corner[i]];
+      screen.x[i] = p[i].x;
+      screen.y[i] = p[i].y;
+      screen.w[i] = batch_.clip_w[corner[i]];
+      color_[i] = batch_.colors[corner[i]];
+      if (batch_.normals != nullptr) normal_[i] = batch_.normals[corner[i]];
+    }
+    depth_ = detail::make_depth_plane(p, z);
+    // Interpolation coordinates from a pixel corner near the triangle keep float32 exact.
+    origin_x_ = static_cast<std::int32_t>(std::floor(p[0].x));
+    origin_y_ = static_cast<std::int32_t>(std::floor(p[0].y));
+    interpolator_ = ScreenInterpolator<Arch, Method>(screen, origin_x_, origin_y_);
+    // Model no more than the scene needs: equal w (orthographic views, or a triangle facing the
+    // camera) makes perspective-correct weights equal the affine ones.
+    perspective_ = batch_.perspective == Perspective::correct &&
+                   !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
+    if (perspective_) divide_ = PerspectiveDivide<Arch>(screen);
+    flat_color_ = detail_pack(color_[0]);
+  }
+
+  void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
+    const std::size_t base =
+        (static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(batch_.tiles_x) + tile_x) * 64;
+    float* depth = batch_.depth_tiles + base;
+    std::uint32_t* color = batch_.color_tiles + base;
+    const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
+    const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
+    fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
+    // The dx term of the depth formula for the tile's columns (exact dx, one rounding each).
+    Floats depth_columns[kParts];
+    for (std::size_t h = 0; h < kParts; ++h) {
+      const Floats dx =
+          (lane_offsets(static_cast<float>(px + static_cast<std::int32_t>(h * kLanes)) + 0.5f)) -
+          Floats(depth_.x0);
+      depth_columns[h] = Floats(depth_.dzdx) * dx;
+    }
+    for (int row = 0; row < kTileSize; ++row) {
+      const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
+      if (row_mask == 0) continue;
+      const Floats row_base(detail::depth_row_base(depth_, py + row));
+      for (std::size_t h = 0; h < kParts; ++h) {
+        const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
+        const Floats z = clamp01(row_base + depth_columns[h]);
+        const Floats stored = Floats::load_aligned(depth + offset);
+        const Floats covered = lane_mask(row_mask >> (h * kLanes));
+        const Floats write = covered & passes(z, stored);
+        if (batch_.depth_write) ((z & write) | (stored & ~write)).store_aligned(depth + offset);
+        const Ints write_lanes = xsimd::bitwise_cast<Ints>(write);
+        passed_ = passed_ - write_lanes;  // all-ones lanes are -1
+        const Ints old_color = Ints::load_aligned(reinterpret_cast<std::int32_t*>(color + offset));
+        const Ints new_color =
+            shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_, py + row - origin_y_);
+        ((new_color & write_lanes) | (old_color & ~write_lanes))
+            .store_aligned(reinterpret_cast<std::int32_t*>(color + offset));
+      }
+    }
+  }
+
+  void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
+                  std::uint64_t mask) {
+    for (std::uint32_t tile_x = begin; tile_x < end; ++tile_x)
+      tile(tile_x, tile_y, mask);
+  }
+
+  void add_counts(detail::ShadeCounts& counts) const {
+    alignas(64) std::int32_t lanes[kLanes];
+    passed_.store_aligned(lanes);
+    std::uint64_t passed = 0;
+    for (std::size_t i = 0; i < kLanes; ++i)
+      passed += static_cast<std::uint32_t>(lanes[i]);
+    counts.fragments += fragments_;
+    counts.passed += passed;
+  }
+
+ private:
+  static Floats lane_offsets(float first) {
+    alignas(64) static constexpr float kLane[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+    return Floats::load_aligned(kLane) + Floats(first);
+  }
+  static Floats clamp01(Floats z) { return xsimd::min(xsimd::max(z, Floats(0.0f)), Floats(1.0f)); }
+  static Floats all_ones_where(xsimd::batch_bool<float, Arch> condition) {
+    return xsimd::select(condition, xsimd::bitwise_cast<Floats>(Ints(-1)), Floats(0.0f));
+  }
+  // All-ones lanes where bit `lane` of `bits` is set.
+  static Floats lane_mask(std::uint32_t bits) {
+    alignas(64) static constexpr std::int32_t kBit[8] = {1, 2, 4, 8, 16, 32, 64, 128};
+    const Ints bit = Ints::load_aligned(kBit);
+    const Ints set =
+        xsimd::select((Ints(static_cast<std::int32_t>(bits)) & bit) == bit, Ints(-1), Ints(0));
+    return xsimd::bitwise_cast<Floats>(set);
+  }
+  Floats passes(Floats z, Floats stored) const {
+    switch (batch_.depth_test) {
+      case DepthTest::less:
+        return all_ones_where(z < stored);
+      case DepthTest::less_equal:
+        return all_ones_where(z <= stored);
+      case DepthTest::greater:
+        return all_ones_where(z > stored);
+      case DepthTest::always:
+        return xsimd::bitwise_cast<Floats>(Ints(-1));
+      case DepthTest::never:
+        break;
+    }
+    return Floats(0.0f);
+  }
+
+  static std::uint32_t detail_pack(const Vec4& c) { return pack_rgba8(c); }
+
+  // Packed RGBA8 of kLanes pixels from (column, row) relative to the interpolation origin.
+  Ints shade(std::int32_t column, std::int32_t row) const {
+    if (batch_.shading == Shading::flat) return Ints(static_cast<std::int32_t>(flat_color_));
+    WeightRow<Arch> w = interpolator_.row(column, row);
+    if (perspective_) w = divide_.apply(w);
+    Floats rgba[4];
+    const float* c0 = &color_[0].x;
+    const float* c1 = &color_[1].x;
+    const float* c2 = &color_[2].x;
+    for (int k = 0; k < 4; ++k)
+      rgba[k] = w.b[0] * Floats(c0[k]) + w.b[1] * Floats(c1[k]) + w.b[2] * Floats(c2[k]);
+    if (batch_.shading == Shading::diffuse) {
+      Floats n[3];
+      const float* n0 = &normal_[0].x;
+      const float* n1 = &normal_[1].x;
+      const float* n2 = &normal_[2].x;
+      for (int k = 0; k < 3; ++k)
+        n[k] = w.b[0] * Floats(n0[k]) + w.b[1] * Floats(n1[k]) + w.b[2] * Floats(n2[k]);
+      const Floats length = xsimd::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const Floats facing = n[0] * Floats(batch_.light.x) + n[1] * Floats(batch_.light.y) +
+                            n[2] * Floats(batch_.light.z);
+      // A zero normal gives no direct light, not NaN.
+      const Floats lambert = xsimd::select(length > Floats(0.0f),
+                                           xsimd::max(facing / length, Floats(0.0f)), Floats(0.0f));
+      const Floats light = Floats(batch_.ambient) + Floats(1.0f - batch_.ambient) * lambert;
+      for (int k = 0; k < 3; ++k)
+        rgba[k] = rgba[k] * light;
+    }
+    Ints packed(0);
+    for (int k = 0; k < 4; ++k) {
+      const Floats scaled = clamp01(rgba[k]) * Floats(255.0f);
+      packed = packed | (xsimd::nearbyint_as_int(scaled) << (8 * k));
+    }
+    return packed;
+  }
+
+  const detail::ShadeBatch& batch_;
+  ScreenInterpolator<Arch, Method> interpolator_;
+  PerspectiveDivide<Arch> divide_;
+  detail::DepthPlane depth_{};
+  Vec4 color_[3]{};
+  Vec3 normal_[3]{};
+  std::uint32_t flat_color_ = 0;
+  std::int32_t origin_x_ = 0, origin_y_ = 0;
+  bool perspective_ = false;
+  std::uint64_t fragments_ = 0;
+  Ints passed_ = Ints(0);
+};
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

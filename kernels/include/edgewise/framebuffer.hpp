@@ -1,0 +1,81 @@
+// A render target: RGBA8 colour and float32 depth, stored in 8x8 tiles.
+//
+// Layout: the target is padded to whole tiles; tile (tx, ty) holds 64 consecutive pixels, row by
+// row, at index (ty * tiles_x + tx) * 64, and pixel (x, y) of the target is element
+// ((y / 8) * tiles_x + x / 8) * 64 + (y % 8) * 8 + x % 8 of both the colour and the depth array.
+// A tile is exactly one coverage mask (raster.hpp): a row of 8 pixels is 32 bytes of colour and
+// 32 of depth, one AVX2 register each, and a tile's 512 bytes stay together in cache. Padding
+// pixels are never drawn. read_rgba8() and read_depth() convert to the usual row-major order.
+//
+// Colour is packed R | G << 8 | B << 16 | A << 24 (bytes R, G, B, A in memory on little-endian
+// machines), linear values v / 255.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <new>
+#include <span>
+#include <vector>
+
+#include "edgewise/vector.hpp"
+
+namespace edgewise {
+
+// Storage aligned to 64 bytes, so that every tile row is one aligned SIMD load on every ISA.
+template <class T>
+struct TileAlignedAllocator {
+  using value_type = T;
+  static constexpr std::align_val_t kAlignment{64};
+  TileAlignedAllocator() = default;
+  template <class U>
+  TileAlignedAllocator(const TileAlignedAllocator<U>&) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlignment)); }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, kAlignment); }
+  friend bool operator==(const TileAlignedAllocator&, const TileAlignedAllocator&) { return true; }
+};
+
+class Framebuffer {
+ public:
+  // Throws std::invalid_argument for a side outside 0 .. kMaxTargetSize (raster.hpp).
+  Framebuffer(std::int32_t width, std::int32_t height);
+
+  std::int32_t width() const { return width_; }
+  std::int32_t height() const { return height_; }
+  std::int32_t tiles_x() const { return tiles_x_; }
+  std::int32_t tiles_y() const { return tiles_y_; }
+
+  // Colour components are clamped to [0, 1] and rounded to 8 bits; depth is stored as given.
+  void clear(const Vec4& color, float depth);
+
+  std::uint32_t color(std::int32_t x, std::int32_t y) const { return color_[index(x, y)]; }
+  float depth(std::int32_t x, std::int32_t y) const { return depth_[index(x, y)]; }
+
+  // Row-major copies: 4 bytes (R, G, B, A) per pixel, and one float per pixel. Throw
+  // std::invalid_argument when the span's size is not width * height * 4 (or width * height).
+  void read_rgba8(std::span<std::uint8_t> rgba) const;
+  void read_depth(std::span<float> depth) const;
+
+  // The tiled storage (see the layout above), for kernels.
+  std::uint32_t* color_tiles() { return color_.data(); }
+  float* depth_tiles() { return depth_.data(); }
+  const std::uint32_t* color_tiles() const { return color_.data(); }
+  const float* depth_tiles() const { return depth_.data(); }
+
+  std::size_t index(std::int32_t x, std::int32_t y) const {
+    return (static_cast<std::size_t>(y >> 3) * static_cast<std::size_t>(tiles_x_) +
+            static_cast<std::size_t>(x >> 3)) *
+               64 +
+           static_cast<std::size_t>((y & 7) * 8 + (x & 7));
+  }
+
+ private:
+  std::int32_t width_, height_, tiles_x_, tiles_y_;
+  std::vector<std::uint32_t, TileAlignedAllocator<std::uint32_t>> color_;
+  std::vector<float, TileAlignedAllocator<float>> depth_;
+};
+
+// Linear [0, 1] colour to the packed RGBA8 value: each component clamped, scaled by 255 and
+// rounded to nearest (NaN becomes 0).
+std::uint32_t pack_rgba8(const Vec4& color);
+
+}  // namespace edgewise

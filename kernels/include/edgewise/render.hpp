@@ -1,0 +1,84 @@
+// Drawing shaded, depth-tested triangle meshes into a Framebuffer.
+//
+// The pipeline: vertices are transformed to clip space (camera.hpp), triangles are clipped
+// (clip.hpp) and mapped to the screen, snapped to 1/256 px like every coverage decision, culled
+// by winding, rasterized with the exact coverage of raster.hpp, depth-tested, shaded, written.
+//
+// Depth is z/w, interpolated linearly in screen space in float32 by one fixed formula (see
+// kernels/src/depth_plane.hpp), so depth-test outcomes are identical on every ISA and in the
+// scalar reference. Colours and normals are interpolated by the chosen method, perspective-
+// correct by default, within the bounds derived in the kernels.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "edgewise/camera.hpp"
+#include "edgewise/framebuffer.hpp"
+#include "edgewise/interpolation.hpp"
+#include "edgewise/isa.hpp"
+#include "edgewise/raster.hpp"
+#include "edgewise/vector.hpp"
+
+namespace edgewise {
+
+// Passes when (fragment depth) OP (stored depth).
+enum class DepthTest : std::uint8_t { less, less_equal, greater, always, never };
+
+enum class Shading : std::uint8_t {
+  flat,     // every pixel takes the colour of the triangle's first vertex
+  gouraud,  // vertex colours interpolated
+  diffuse,  // interpolated colour times (ambient + (1 - ambient) max(0, n . l)), n the
+            // interpolated normal renormalized per pixel
+};
+
+std::string_view depth_test_name(DepthTest test);
+std::optional<DepthTest> parse_depth_test(std::string_view name);
+std::string_view shading_name(Shading shading);
+std::optional<Shading> parse_shading(std::string_view name);
+
+// The mesh to draw; spans are read during draw() only.
+struct DrawMesh {
+  std::span<const Vec3> positions;
+  std::span<const Vec4> colors;            // linear RGBA per vertex; empty: opaque white
+  std::span<const Vec3> normals;           // per vertex; needed by Shading::diffuse
+  std::span<const std::uint32_t> indices;  // three per triangle; empty: vertices 3t .. 3t + 2
+};
+
+struct DrawOptions {
+  Mat4 transform = identity();     // object space to clip space
+  CullMode cull = CullMode::none;  // winding on screen (y down), as raster.hpp defines it
+  DepthTest depth_test = DepthTest::less;
+  bool depth_write = true;
+  Shading shading = Shading::gouraud;
+  InterpolationMethod interpolation = InterpolationMethod::plane_equations;
+  Perspective perspective = Perspective::correct;
+  Vec3 light_direction{0.0f, 0.0f, 1.0f};  // towards the light, in the normals' space
+  float ambient = 0.15f;
+  std::optional<PixelRect> scissor;  // intersected with the framebuffer
+  std::optional<Isa> isa;            // default: active_isa()
+};
+
+struct DrawReport {
+  std::uint64_t triangles = 0;  // in the mesh
+  std::uint64_t clipped = 0;    // needed clipping (and produced this many more triangles:)
+  std::uint64_t clip_triangles = 0;
+  std::uint64_t outside = 0;           // entirely outside the view volume
+  std::uint64_t culled = 0;            // by winding or zero area after snapping
+  std::uint64_t errors = 0;            // non-finite or out-of-range positions, bad indices
+  std::uint64_t rasterized = 0;        // screen triangles handed to the rasterizer
+  std::uint64_t fragments = 0;         // covered samples
+  std::uint64_t fragments_passed = 0;  // of those, passing the depth test (and so written)
+  double vertex_seconds = 0.0;         // transform, clipping and screen mapping
+  double raster_seconds = 0.0;         // setup, coverage, depth and shading
+  Isa isa = Isa::reference;
+};
+
+// Throws std::invalid_argument for inconsistent spans (attribute counts, index count not a
+// multiple of 3, diffuse without normals), an inverted scissor or an unsupported ISA. Bad
+// geometry is counted in the report, never drawn.
+DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
+
+}  // namespace edgewise

@@ -1,0 +1,54 @@
+// The depth formula every path shares, so that depth-test outcomes are identical on every ISA and
+// in the scalar reference: z/w is interpolated linearly in screen space from the snapped vertex
+// positions, in float32, with one fixed order of operations.
+//
+//   depth(px, py) = clamp((z0 + dzdy * dy) + dzdx * dx, 0, 1),
+//   dx = (px + 0.5) - x0,  dy = (py + 0.5) - y0   for pixel (px, py),
+//
+// each operation rounded to float32 (no fused multiply-add), where (x0, y0) is the triangle's
+// first snapped vertex and z0 its depth. dx and dy are exact in float: snapped coordinates are
+// multiples of 2^-8 below 2^15 in magnitude, so their differences with pixel centers need at
+// most 24 significant bits. The plane's slopes come from the snapped positions in double
+// (the cross products are exact: 25-bit differences) and are rounded to float once.
+#pragma once
+
+#include <cstdint>
+
+#include "edgewise/vector.hpp"
+
+namespace edgewise::detail {
+
+struct DepthPlane {
+  float z0, dzdx, dzdy;
+  float x0, y0;  // the first vertex, snapped
+};
+
+inline DepthPlane make_depth_plane(const Vec2 p[3], const float z[3]) {
+  const double x1 = static_cast<double>(p[1].x) - p[0].x, y1 = static_cast<double>(p[1].y) - p[0].y;
+  const double x2 = static_cast<double>(p[2].x) - p[0].x, y2 = static_cast<double>(p[2].y) - p[0].y;
+  const double z1 = static_cast<double>(z[1]) - z[0], z2 = static_cast<double>(z[2]) - z[0];
+  const double area = x1 * y2 - y1 * x2;
+  DepthPlane plane{z[0], 0.0f, 0.0f, p[0].x, p[0].y};
+  if (area != 0.0) {  // zero-area triangles cover nothing; keep the plane finite anyway
+    plane.dzdx = static_cast<float>((z1 * y2 - z2 * y1) / area);
+    plane.dzdy = static_cast<float>((z2 * x1 - z1 * x2) / area);
+  }
+  return plane;
+}
+
+inline float clamp_depth(float z) {
+  return z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;
+}
+
+// The depth at row py's start, before the dx term: z0 + dzdy * dy.
+inline float depth_row_base(const DepthPlane& plane, std::int32_t py) {
+  const float dy = (static_cast<float>(py) + 0.5f) - plane.y0;
+  return plane.z0 + plane.dzdy * dy;
+}
+
+inline float depth_at(const DepthPlane& plane, std::int32_t px, std::int32_t py) {
+  const float dx = (static_cast<float>(px) + 0.5f) - plane.x0;
+  return clamp_depth(depth_row_base(plane, py) + plane.dzdx * dx);
+}
+
+}  // namespace edgewise::detail

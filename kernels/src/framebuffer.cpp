@@ -1,0 +1,73 @@
+// The tiled render target.
+#include "edgewise/framebuffer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "edgewise/raster.hpp"
+
+namespace edgewise {
+namespace {
+
+std::uint32_t to_byte(float v) {
+  // NaN compares false both ways and ends at 0.
+  const float clamped = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+  return static_cast<std::uint32_t>(std::lrint(clamped * 255.0f));
+}
+
+}  // namespace
+
+std::uint32_t pack_rgba8(const Vec4& color) {
+  return to_byte(color.x) | to_byte(color.y) << 8 | to_byte(color.z) << 16 | to_byte(color.w) << 24;
+}
+
+Framebuffer::Framebuffer(std::int32_t width, std::int32_t height) : width_(width), height_(height) {
+  if (width < 0 || width > kMaxTargetSize || height < 0 || height > kMaxTargetSize) {
+    throw std::invalid_argument("framebuffer " + std::to_string(width) + "x" +
+                                std::to_string(height) + " is outside 0.." +
+                                std::to_string(kMaxTargetSize) + " pixels per side");
+  }
+  tiles_x_ = (width + 7) / 8;
+  tiles_y_ = (height + 7) / 8;
+  const std::size_t pixels = static_cast<std::size_t>(tiles_x_) * tiles_y_ * 64;
+  color_.assign(pixels, 0);
+  depth_.assign(pixels, 1.0f);
+}
+
+void Framebuffer::clear(const Vec4& color, float depth) {
+  std::fill(color_.begin(), color_.end(), pack_rgba8(color));
+  std::fill(depth_.begin(), depth_.end(), depth);
+}
+
+void Framebuffer::read_rgba8(std::span<std::uint8_t> rgba) const {
+  const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+  if (rgba.size() != pixels * 4) {
+    throw std::invalid_argument("read_rgba8: the span holds " + std::to_string(rgba.size()) +
+                                " bytes, not " + std::to_string(pixels * 4));
+  }
+  std::size_t out = 0;
+  for (std::int32_t y = 0; y < height_; ++y) {
+    for (std::int32_t x = 0; x < width_; ++x) {
+      const std::uint32_t c = color(x, y);
+      for (int k = 0; k < 4; ++k)
+        rgba[out++] = static_cast<std::uint8_t>(c >> (8 * k));
+    }
+  }
+}
+
+void Framebuffer::read_depth(std::span<float> depth_out) const {
+  const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+  if (depth_out.size() != pixels) {
+    throw std::invalid_argument("read_depth: the span holds " + std::to_string(depth_out.size()) +
+                                " values, not " + std::to_string(pixels));
+  }
+  std::size_t out = 0;
+  for (std::int32_t y = 0; y < height_; ++y) {
+    for (std::int32_t x = 0; x < width_; ++x)
+      depth_out[out++] = depth(x, y);
+  }
+}
+
+}  // namespace edgewise

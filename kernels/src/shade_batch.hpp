@@ -1,0 +1,35 @@
+// What the shading kernels receive: screen-space triangles with their attributes, already
+// transformed, clipped, mapped to the screen and snapped to 1/256 px, and the render state.
+#pragma once
+
+#include <cstdint>
+
+#include "edgewise/render.hpp"
+#include "kernel_table.hpp"
+
+namespace edgewise::detail {
+
+struct ShadeBatch {
+  TriangleBatch coverage;  // snapped screen positions, indices, clip rectangle, cull mode
+  const float* depth;      // z/w per vertex, in [0, 1]
+  const float* clip_w;     // clip-space w per vertex, > 0
+  const Vec4* colors;      // per vertex
+  const Vec3* normals;     // per vertex; null unless shading is diffuse
+  Shading shading;
+  InterpolationMethod method;
+  Perspective perspective;
+  DepthTest depth_test;
+  bool depth_write;
+  Vec3 light;  // unit length
+  float ambient;
+  std::uint32_t* color_tiles;  // Framebuffer's tiled storage
+  float* depth_tiles;
+  std::int32_t tiles_x;
+};
+
+struct ShadeCounts {
+  std::uint64_t fragments = 0;  // covered samples
+  std::uint64_t passed = 0;     // samples that passed the depth test
+};
+
+}  // namespace edgewise::detail

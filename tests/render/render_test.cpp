@@ -1,0 +1,299 @@
+// draw(): every ISA against the scalar reference. Depth-test outcomes and depth values must be
+// identical (the shared depth formula); colours must lie within a bound derived from the
+// interpolation error bounds (tests/interpolation/error_bounds.hpp); report counts must match.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "edgewise/camera.hpp"
+#include "edgewise/render.hpp"
+#include "interpolation/error_bounds.hpp"
+#include "isa_params.hpp"
+#include "random.hpp"
+
+namespace edgewise::test {
+namespace {
+
+constexpr float kFov = 1.0f, kNear = 0.5f, kFar = 40.0f;
+constexpr double kFloatUnit = 0x1.0p-24;
+
+struct Scene {
+  std::vector<Vec3> positions;
+  std::vector<Vec4> colors;
+  std::vector<Vec3> normals;
+};
+
+Vec3 unit(double x, double y, double z) {
+  const double n = std::sqrt(x * x + y * y + z * z);
+  return {static_cast<float>(x / n), static_cast<float>(y / n), static_cast<float>(z / n)};
+}
+
+// A point in view space inside the frustum: NDC (x, y) and a distance in front of the camera.
+Vec3 frustum_point(double ndc_x, double ndc_y, double distance, double aspect) {
+  const double half = std::tan(kFov / 2.0);
+  return {static_cast<float>(ndc_x * distance * half * aspect),
+          static_cast<float>(ndc_y * distance * half), static_cast<float>(-distance)};
+}
+
+// Random triangles well inside the frustum (none needs clipping), of mixed sizes and depths,
+// with random colours and normals within 60 degrees of a common direction (so the interpolated
+// normal never comes near zero length: |n| >= cos 60 = 1/2).
+Scene random_scene(Random& random, int triangles, double aspect) {
+  Scene scene;
+  for (int t = 0; t < triangles; ++t) {
+    const double size = random.log_uniform(0.02, 0.6);
+    const double cx = random.uniform(-0.6, 0.6), cy = random.uniform(-0.6, 0.6);
+    const double base = random.log_uniform(kNear * 2.0, kFar * 0.5);
+    const Vec3 axis = unit(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(0.5, 1));
+    for (int i = 0; i < 3; ++i) {
+      const double distance = base * random.uniform(0.6, 1.6);
+      scene.positions.push_back(frustum_point(cx + random.uniform(-size, size),
+                                              cy + random.uniform(-size, size), distance, aspect));
+      scene.colors.push_back({static_cast<float>(random.uniform()),
+                              static_cast<float>(random.uniform()),
+                              static_cast<float>(random.uniform()), 1.0f});
+      const double spread = 0.5;  // tan of about 27 degrees per component
+      scene.normals.push_back(unit(axis.x + random.uniform(-spread, spread),
+                                   axis.y + random.uniform(-spread, spread),
+                                   axis.z + random.uniform(-spread, spread)));
+    }
+  }
+  return scene;
+}
+
+DrawMesh mesh_of(const Scene& scene) {
+  return {scene.positions, scene.colors, scene.normals, {}};
+}
+
+struct Rendered {
+  DrawReport report;
+  std::vector<std::uint8_t> rgba;
+  std::vector<float> depth;
+};
+
+Rendered render(Isa isa, const Scene& scene, DrawOptions options, std::int32_t width,
+                std::int32_t height) {
+  Framebuffer target(width, height);
+  target.clear({0.1f, 0.2f, 0.3f, 1.0f}, 1.0f);
+  options.isa = isa;
+  Rendered out;
+  out.report = draw(target, mesh_of(scene), options);
+  out.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+  out.depth.resize(static_cast<std::size_t>(width) * height);
+  target.read_rgba8(out.rgba);
+  target.read_depth(out.depth);
+  return out;
+}
+
+DrawOptions perspective_options(std::int32_t width, std::int32_t height) {
+  DrawOptions options;
+  options.transform = perspective(kFov, static_cast<float>(width) / height, kNear, kFar);
+  return options;
+}
+
+// The screen triangle draw() rasterizes for an unclipped triangle: viewport mapping, then the
+// 1/256 px snap.
+ScreenTriangle screen_triangle(const Scene& scene, std::size_t t, const DrawOptions& options,
+                               const Viewport& viewport) {
+  ScreenTriangle s;
+  for (int i = 0; i < 3; ++i) {
+    const Vec4 clip = transform(options.transform, scene.positions[3 * t + i]);
+    const ScreenVertex v = to_screen(clip, viewport);
+    s.x[i] = std::nearbyint(static_cast<double>(v.x) * 256.0) / 256.0;
+    s.y[i] = std::nearbyint(static_cast<double>(v.y) * 256.0) / 256.0;
+    s.w[i] = clip.w;
+  }
+  return s;
+}
+
+// Bounds on the distance of the fast and of the reference weights from the exact ones.
+struct WeightErrors {
+  double value[3];
+  double error[3];
+};
+WeightErrors weight_errors(InterpolationMethod method, Perspective perspective,
+                           const ScreenTriangle& t, double px, double py) {
+  // The fast kernel sets its interpolators up at the pixel corner below the first vertex.
+  const double origin_x = std::floor(t.x[0]), origin_y = std::floor(t.y[0]);
+  BoundedWeights fast =
+      screen_weight_bounds(method, Evaluator::float32, t, origin_x, origin_y, px, py);
+  BoundedWeights ref = screen_weight_bounds(method, Evaluator::reference, t, 0, 0, px, py);
+  if (method == InterpolationMethod::inverse_distance) {
+    for (Bounded& b : ref.b)
+      b.error = reference_inverse_distance_error(b.value);
+  }
+  const bool equal_w = t.w[0] == t.w[1] && t.w[1] == t.w[2];
+  if (perspective == Perspective::correct) {
+    // With equal w the fast path keeps the screen weights, which equal the exact
+    // perspective-correct ones.
+    if (!equal_w) fast = perspective_bounds(Evaluator::float32, fast, t);
+    ref = perspective_bounds(Evaluator::reference, ref, t);
+  }
+  WeightErrors e;
+  for (int i = 0; i < 3; ++i) {
+    e.value[i] = ref.b[i].value;
+    e.error[i] = fast.b[i].error + ref.b[i].error;
+  }
+  return e;
+}
+
+// The largest difference, in 8-bit codes, between the fast and the reference colour of a pixel:
+// a colour channel sum(b_i c_i) is off by at most sum(e_i |c_i|) from the weight errors plus
+// 6 float roundings of its terms (three products, two sums, one margin); diffuse adds the
+// error of max(0, n.l / |n|), at most |e_n| / (|n| - |e_n|) + 12 roundings (n's components,
+// the dot products, sqrt, the division), times (1 - ambient). Codes then differ by the value
+// difference times 255, rounded up, plus one for the rounding of each side.
+int allowed_codes(const Scene& scene, std::size_t t, const WeightErrors& e, Shading shading,
+                  float ambient) {
+  double color_error = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    double err = 0.0, magnitude = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const float c = (&scene.colors[3 * t + i].x)[k];
+      err += e.error[i] * std::abs(c);
+      magnitude += std::abs(e.value[i] * c) + e.error[i] * std::abs(c);
+    }
+    color_error = std::max(color_error, err + 6.0 * kFloatUnit * magnitude);
+  }
+  if (shading == Shading::diffuse) {
+    double normal_error_sq = 0.0, n[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      double err = 0.0, magnitude = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        const float c = (&scene.normals[3 * t + i].x)[k];
+        err += e.error[i] * std::abs(c);
+        magnitude += std::abs(e.value[i] * c) + e.error[i] * std::abs(c);
+        n[k] += e.value[i] * c;
+      }
+      err += 6.0 * kFloatUnit * magnitude;
+      normal_error_sq += err * err;
+    }
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double normal_error = std::sqrt(normal_error_sq);
+    const double lambert_error = length > 2.0 * normal_error
+                                     ? normal_error / (length - normal_error) + 12.0 * kFloatUnit
+                                     : 1.0;
+    color_error = color_error + (1.0 - ambient) * lambert_error + 4.0 * kFloatUnit;
+  }
+  return 1 + static_cast<int>(std::ceil(255.0 * color_error));
+}
+
+using Render = IsaTest;
+
+TEST_P(Render, SceneDepthAndCountsEqualTheReference) {
+  Random random(20261121);
+  const std::int32_t width = 157, height = 101;  // not whole tiles
+  const Scene scene = random_scene(random, 400, static_cast<double>(width) / height);
+  for (DepthTest test : {DepthTest::less, DepthTest::less_equal, DepthTest::greater,
+                         DepthTest::always, DepthTest::never}) {
+    for (bool write : {true, false}) {
+      DrawOptions options = perspective_options(width, height);
+      options.depth_test = test;
+      options.depth_write = write;
+      const Rendered expected = render(Isa::reference, scene, options, width, height);
+      const Rendered actual = render(isa(), scene, options, width, height);
+      const std::string where = std::string(depth_test_name(test)) + (write ? "" : " no write");
+      EXPECT_EQ(actual.report.fragments, expected.report.fragments) << where;
+      EXPECT_EQ(actual.report.fragments_passed, expected.report.fragments_passed) << where;
+      EXPECT_EQ(actual.report.rasterized, expected.report.rasterized) << where;
+      EXPECT_EQ(actual.report.culled, expected.report.culled) << where;
+      ASSERT_EQ(actual.depth, expected.depth) << where;  // bit for bit
+      if (test == DepthTest::never) {
+        EXPECT_EQ(actual.report.fragments_passed, 0u);
+      }
+      if (test == DepthTest::always) {
+        EXPECT_EQ(actual.report.fragments_passed, actual.report.fragments);
+      }
+      EXPECT_GT(expected.report.fragments, 10000u);
+    }
+  }
+}
+
+// One triangle at a time, so that every written pixel comes from a known triangle: colours of
+// every method, both perspective modes and every shading model within the derived bound.
+TEST_P(Render, ColoursWithinTheDerivedBound) {
+  Random random(7);
+  const std::int32_t width = 128, height = 96;
+  const Viewport viewport{width, height};
+  const Scene scene = random_scene(random, 60, static_cast<double>(width) / height);
+  std::uint64_t pixels = 0;
+  int widest = 0;
+  for (std::size_t t = 0; t < scene.positions.size() / 3; ++t) {
+    Scene one;
+    one.positions.assign(scene.positions.begin() + 3 * t, scene.positions.begin() + 3 * t + 3);
+    one.colors.assign(scene.colors.begin() + 3 * t, scene.colors.begin() + 3 * t + 3);
+    one.normals.assign(scene.normals.begin() + 3 * t, scene.normals.begin() + 3 * t + 3);
+    DrawOptions options = perspective_options(width, height);
+    const ScreenTriangle tri = screen_triangle(one, 0, options, viewport);
+    for (InterpolationMethod method : kInterpolationMethods) {
+      if (method == InterpolationMethod::nearest_vertex) continue;  // discontinuous: below
+      for (Perspective perspective : {Perspective::correct, Perspective::affine}) {
+        for (Shading shading : {Shading::gouraud, Shading::diffuse}) {
+          options.interpolation = method;
+          options.perspective = perspective;
+          options.shading = shading;
+          const Rendered expected = render(Isa::reference, one, options, width, height);
+          const Rendered actual = render(isa(), one, options, width, height);
+          ASSERT_EQ(actual.depth, expected.depth);
+          for (std::int32_t y = 0; y < height; ++y) {
+            for (std::int32_t x = 0; x < width; ++x) {
+              const std::size_t p = static_cast<std::size_t>(y) * width + x;
+              if (expected.depth[p] == 1.0f && actual.depth[p] == 1.0f) continue;  // not drawn
+              const WeightErrors e = weight_errors(method, perspective, tri, x + 0.5, y + 0.5);
+              const int allowed = allowed_codes(one, 0, e, shading, options.ambient);
+              widest = std::max(widest, allowed);
+              for (int k = 0; k < 4; ++k) {
+                const int difference = std::abs(actual.rgba[4 * p + k] - expected.rgba[4 * p + k]);
+                ASSERT_LE(difference, allowed)
+                    << "triangle " << t << " pixel " << x << "," << y << " channel " << k << " "
+                    << interpolation_method_name(method) << " " << perspective_name(perspective)
+                    << " " << shading_name(shading);
+              }
+              ++pixels;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(pixels, 50000u);
+  // The bound is informative: with these well-shaped triangles it allows one code almost always.
+  EXPECT_LE(widest, 3);
+}
+
+TEST_P(Render, NearestVertexTakesAVertexColour) {
+  Random random(11);
+  const std::int32_t width = 64, height = 64;
+  const Scene scene = random_scene(random, 30, 1.0);
+  DrawOptions options = perspective_options(width, height);
+  options.interpolation = InterpolationMethod::nearest_vertex;
+  options.depth_test = DepthTest::always;
+  for (std::size_t t = 0; t < scene.positions.size() / 3; ++t) {
+    Scene one;
+    one.positions.assign(scene.positions.begin() + 3 * t, scene.positions.begin() + 3 * t + 3);
+    one.colors.assign(scene.colors.begin() + 3 * t, scene.colors.begin() + 3 * t + 3);
+    one.normals.assign(scene.normals.begin() + 3 * t, scene.normals.begin() + 3 * t + 3);
+    const Rendered actual = render(isa(), one, options, width, height);
+    std::uint32_t vertex_codes[3];
+    for (int i = 0; i < 3; ++i)
+      vertex_codes[i] = pack_rgba8(one.colors[i]);
+    for (std::size_t p = 0; p < actual.depth.size(); ++p) {
+      if (actual.depth[p] == 1.0f) continue;
+      const std::uint32_t code = actual.rgba[4 * p] | actual.rgba[4 * p + 1] << 8 |
+                                 actual.rgba[4 * p + 2] << 16 |
+                                 static_cast<std::uint32_t>(actual.rgba[4 * p + 3]) << 24;
+      EXPECT_TRUE(code == vertex_codes[0] || code == vertex_codes[1] || code == vertex_codes[2])
+          << "triangle " << t << " pixel " << p;
+    }
+  }
+}
+
+EDGEWISE_INSTANTIATE_PER_ISA(Render, every_isa());
+
+}  // namespace
+}  // namespace edgewise::test
