@@ -19,6 +19,7 @@
 #include "../src/depth_plane.hpp"
 #include "../src/shade_batch.hpp"
 #include "interpolation-inl.hpp"
+#include "simd_ops-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
@@ -60,13 +61,20 @@ class ShadingVisitor {
     // Interpolation coordinates from a pixel corner near the triangle keep float32 exact.
     origin_x_ = static_cast<std::int32_t>(std::floor(p[0].x));
     origin_y_ = static_cast<std::int32_t>(std::floor(p[0].y));
-    interpolator_ = ScreenInterpolator<Arch, Method>(screen, origin_x_, origin_y_);
     // Model no more than the scene needs: equal w (orthographic views, or a triangle facing the
-    // camera) makes perspective-correct weights equal the affine ones.
+    // camera) makes perspective-correct weights equal the affine ones; flat shading needs no
+    // weights, and Gouraud colour by plane equations interpolates the colours directly.
     perspective_ = batch_.perspective == Perspective::correct &&
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
-    if (perspective_) divide_ = PerspectiveDivide<Arch>(screen);
     flat_color_ = detail_pack(color_[0]);
+    colour_planes_ =
+        Method == InterpolationMethod::plane_equations && batch_.shading == Shading::gouraud;
+    if (colour_planes_) {
+      set_up_colour_planes(p, screen);
+    } else if (batch_.shading != Shading::flat) {
+      interpolator_ = ScreenInterpolator<Arch, Method>(screen, origin_x_, origin_y_);
+      if (perspective_) divide_ = PerspectiveDivide<Arch>(screen);
+    }
   }
 
   void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
@@ -84,11 +92,21 @@ class ShadingVisitor {
           (lane_offsets(static_cast<float>(px + static_cast<std::int32_t>(h * kLanes)) + 0.5f)) -
           Floats(depth_.x0);
       depth_columns[h] = Floats(depth_.dzdx) * dx;
+      if (colour_planes_) {
+        for (int k = 0; k < kPlanes; ++k)
+          colour_columns_[k][h] = Floats(plane_[k].dx) * dx;
+      }
     }
     for (int row = 0; row < kTileSize; ++row) {
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
       if (row_mask == 0) continue;
       const Floats row_base(detail::depth_row_base(depth_, py + row));
+      float colour_rows[kPlanes] = {};
+      if (colour_planes_) {
+        const float dy = (static_cast<float>(py + row) + 0.5f) - depth_.y0;
+        for (int k = 0; k < kPlanes; ++k)
+          colour_rows[k] = plane_[k].at_vertex + plane_[k].dy * dy;
+      }
       for (std::size_t h = 0; h < kParts; ++h) {
         const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
         const Floats z = clamp01(row_base + depth_columns[h]);
@@ -99,8 +117,10 @@ class ShadingVisitor {
         const Ints write_lanes = xsimd::bitwise_cast<Ints>(write);
         passed_ = passed_ - write_lanes;  // all-ones lanes are -1
         const Ints old_color = Ints::load_aligned(reinterpret_cast<std::int32_t*>(color + offset));
-        const Ints new_color =
-            shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_, py + row - origin_y_);
+        const Ints new_color = colour_planes_
+                                   ? planar_colour(colour_rows, h)
+                                   : shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_,
+                                           py + row - origin_y_);
         ((new_color & write_lanes) | (old_color & ~write_lanes))
             .store_aligned(reinterpret_cast<std::int32_t*>(color + offset));
       }
@@ -156,7 +176,49 @@ class ShadingVisitor {
     return Floats(0.0f);
   }
 
-  static std::uint32_t detail_pack(const Vec4& c) { return pack_rgba8(c); }
+  static std::uint32_t detail_pack(const Vec4& c) { return edgewise::pack_rgba8(c); }
+
+  // Gouraud colour by its own plane equations (model no more than the scene needs: one add per
+  // channel and pixel instead of weights, then colours). Each channel, scaled to 0 .. 255, is
+  // value(px, py) = (at_vertex + dy_slope * dy) + dx_slope * dx with the depth formula's exact dx,
+  // dy; perspective-correct, channels are planes of value / w, divided per pixel by the plane of
+  // 1 / w (the fifth). Slopes come from the snapped positions in double, rounded to float once.
+  struct Plane {
+    float at_vertex, dx, dy;
+  };
+  void set_up_colour_planes(const Vec2 p[3], const ScreenTriangle& screen) {
+    const double x1 = static_cast<double>(p[1].x) - p[0].x,
+                 y1 = static_cast<double>(p[1].y) - p[0].y;
+    const double x2 = static_cast<double>(p[2].x) - p[0].x,
+                 y2 = static_cast<double>(p[2].y) - p[0].y;
+    const double area = x1 * y2 - y1 * x2;
+    double inverse_w[3] = {1.0, 1.0, 1.0};
+    if (perspective_) {
+      for (int i = 0; i < 3; ++i)
+        inverse_w[i] = 1.0 / screen.w[i];
+    }
+    for (int k = 0; k < kPlanes; ++k) {
+      double f[3];
+      for (int i = 0; i < 3; ++i) {
+        f[i] = k < 4 ? 255.0 * static_cast<double>((&color_[i].x)[k]) * inverse_w[i] : inverse_w[i];
+      }
+      const double f1 = f[1] - f[0], f2 = f[2] - f[0];
+      plane_[k].at_vertex = static_cast<float>(f[0]);
+      plane_[k].dx = area != 0.0 ? static_cast<float>((f1 * y2 - f2 * y1) / area) : 0.0f;
+      plane_[k].dy = area != 0.0 ? static_cast<float>((f2 * x1 - f1 * x2) / area) : 0.0f;
+    }
+  }
+  Ints planar_colour(const float* rows, std::size_t h) const {
+    Floats channel[4];
+    for (int k = 0; k < 4; ++k)
+      channel[k] = Floats(rows[k]) + colour_columns_[k][h];
+    if (perspective_) {
+      const Floats w = Floats(1.0f) / (Floats(rows[4]) + colour_columns_[4][h]);
+      for (int k = 0; k < 4; ++k)
+        channel[k] = channel[k] * w;
+    }
+    return pack_rgba8_lanes<Arch>(channel);
+  }
 
   // Packed RGBA8 of kLanes pixels from (column, row) relative to the interpolation origin.
   Ints shade(std::int32_t column, std::int32_t row) const {
@@ -186,12 +248,9 @@ class ShadingVisitor {
       for (int k = 0; k < 3; ++k)
         rgba[k] = rgba[k] * light;
     }
-    Ints packed(0);
-    for (int k = 0; k < 4; ++k) {
-      const Floats scaled = clamp01(rgba[k]) * Floats(255.0f);
-      packed = packed | (xsimd::nearbyint_as_int(scaled) << (8 * k));
-    }
-    return packed;
+    for (int k = 0; k < 4; ++k)
+      rgba[k] = rgba[k] * Floats(255.0f);
+    return pack_rgba8_lanes<Arch>(rgba);
   }
 
   const detail::ShadeBatch& batch_;
@@ -203,6 +262,10 @@ class ShadingVisitor {
   std::uint32_t flat_color_ = 0;
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
+  static constexpr int kPlanes = 5;  // R, G, B, A and, for perspective, 1 / w
+  bool colour_planes_ = false;
+  Plane plane_[kPlanes]{};
+  Floats colour_columns_[kPlanes][kParts];
   std::uint64_t fragments_ = 0;
   Ints passed_ = Ints(0);
 };

@@ -167,6 +167,57 @@ inline void horizontal_min4(const xsimd::batch<std::int32_t, Arch>* v, std::int3
   }
 }
 
+// Four channels of colour values in 0 .. 255 (any float; out-of-range values saturate, NaN gives
+// 0) rounded to nearest (ties to even) and packed R | G << 8 | B << 16 | A << 24 per lane.
+// On x86 the saturating packs do the clamping and one byte shuffle interleaves the channels.
+template <class Arch>
+inline xsimd::batch<std::int32_t, Arch> pack_rgba8_lanes(
+    const xsimd::batch<float, Arch>* channels) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    // Values past 2^31 would convert to INT32_MIN: cap them first (min returns its second
+    // operand, NaN, when one is NaN, and NaN converts to INT32_MIN, which saturates to 0).
+    __m256i c[4];
+    for (int k = 0; k < 4; ++k)
+      c[k] = _mm256_cvtps_epi32(_mm256_min_ps(_mm256_set1_ps(255.0f), channels[k]));
+    // Within each 128-bit half: bytes r0..r3 g0..g3 b0..b3 a0..a3, then interleaved.
+    const __m256i planar =
+        _mm256_packus_epi16(_mm256_packs_epi32(c[0], c[1]), _mm256_packs_epi32(c[2], c[3]));
+    const __m256i order = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0,
+                                           4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+    return Ints(_mm256_shuffle_epi8(planar, order));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    __m128i c[4];  // capped as above
+    for (int k = 0; k < 4; ++k)
+      c[k] = _mm_cvtps_epi32(_mm_min_ps(_mm_set1_ps(255.0f), channels[k]));
+    const __m128i planar =
+        _mm_packus_epi16(_mm_packs_epi32(c[0], c[1]), _mm_packs_epi32(c[2], c[3]));
+#if defined(__SSSE3__)
+    const __m128i order = _mm_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+    return Ints(_mm_shuffle_epi8(planar, order));
+#else
+    const __m128i red_green = _mm_unpacklo_epi8(planar, _mm_srli_si128(planar, 4));
+    const __m128i blue_alpha =
+        _mm_unpacklo_epi8(_mm_srli_si128(planar, 8), _mm_srli_si128(planar, 12));
+    return Ints(_mm_unpacklo_epi16(red_green, blue_alpha));
+#endif
+  } else
+#endif
+  {
+    Ints packed(0);
+    for (int k = 0; k < 4; ++k) {
+      const Ints value = xsimd::nearbyint_as_int(channels[k]);
+      const Ints clamped = xsimd::min(xsimd::max(value, Ints(0)), Ints(255));
+      packed = packed | (clamped << (8 * k));
+    }
+    return packed;
+  }
+}
+
 // 2^n for lanes n in 0 .. 8, without variable shifts (SSE has none): the float whose
 // exponent field is n + 127 is exactly 2^n.
 template <class Arch>

@@ -144,6 +144,27 @@ TEST_P(RenderApi, TriangleCrossingTheEyePlaneKeepsItsVisiblePart) {
   EXPECT_TRUE(target.depth(size / 2, size - 1) < 1.0f);  // the floor right below the camera
 }
 
+TEST_P(RenderApi, FlatShadingTakesTheFirstVertexColour) {
+  const std::vector<Vec3> positions = {
+      {0.5f, 0.5f, -0.5f}, {7.5f, 1.0f, -0.2f}, {1.0f, 7.5f, -0.9f}};
+  const std::vector<Vec4> colors = {{0.2f, 0.4f, 0.6f, 1.0f}, {1, 0, 0, 1}, {0, 1, 0, 1}};
+  DrawOptions options = ortho_options(isa());
+  options.shading = Shading::flat;
+  Framebuffer target(8, 8);
+  target.clear({0, 0, 0, 0}, 1.0f);
+  const DrawReport report = draw(target, {positions, colors, {}, {}}, options);
+  ASSERT_GT(report.fragments_passed, 20u);
+  std::uint64_t flat = 0;
+  for (int y = 0; y < 8; ++y) {
+    for (int x = 0; x < 8; ++x) {
+      if (target.depth(x, y) == 1.0f) continue;
+      EXPECT_EQ(target.color(x, y), pack_rgba8(colors[0])) << x << "," << y;
+      ++flat;
+    }
+  }
+  EXPECT_EQ(flat, report.fragments_passed);
+}
+
 TEST(Framebuffer, TiledLayoutRoundTrips) {
   Framebuffer target(13, 9);
   EXPECT_EQ(target.tiles_x(), 2);
