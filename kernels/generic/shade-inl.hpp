@@ -66,7 +66,7 @@ class ShadingVisitor {
     // weights, and Gouraud colour by plane equations interpolates the colours directly.
     perspective_ = batch_.perspective == Perspective::correct &&
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
-    flat_color_ = detail_pack(color_[0]);
+    if (batch_.shading == Shading::flat) flat_color_ = detail_pack(color_[0]);
     colour_planes_ =
         Method == InterpolationMethod::plane_equations && batch_.shading == Shading::gouraud;
     if (colour_planes_) {
