@@ -97,6 +97,13 @@ GuardBandPlanes guard_band_planes(const Viewport& viewport) {
           static_cast<float>(1.0 - y_span), static_cast<float>(1.0 + y_span)};
 }
 
+bool inside_clip_volume(const Vec4& p, const GuardBandPlanes& planes) {
+  for (float c : {p.x, p.y, p.z, p.w}) {
+    if (!std::isfinite(c) || std::fabs(c) > kMaxClipCoordinate) return false;
+  }
+  return p.w > 0.0f && outcode(p, planes) == 0;
+}
+
 ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
                              const GuardBandPlanes& planes) {
   ClippedPolygon result;

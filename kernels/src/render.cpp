@@ -26,9 +26,15 @@ struct ScreenMesh {
 };
 
 // Rounds to the 1/256 px grid, ties to even, as the rasterizer does: the attributes' setup then
-// sees exactly the positions that coverage uses.
+// sees exactly the positions that coverage uses. Adding and subtracting 1.5 * 2^52 rounds a
+// double below 2^51 in magnitude to an integer in the current (nearest-even) mode without a
+// library call; larger values, infinities and NaN pass through unchanged or stay non-finite,
+// and the rasterizer reports them.
 float snap(float v) {
-  return static_cast<float>(std::nearbyint(static_cast<double>(v) * 256.0) / 256.0);
+  constexpr double kRound = 0x1.8p52;
+  const double scaled = static_cast<double>(v) * 256.0;
+  const double rounded = std::fabs(scaled) < 0x1p51 ? (scaled + kRound) - kRound : scaled;
+  return static_cast<float>(rounded / 256.0);
 }
 
 template <class T>
@@ -52,12 +58,20 @@ class VertexStage {
         planes_(guard_band_planes(viewport)),
         diffuse_(options.shading == Shading::diffuse) {
     clip_.reserve(mesh.positions.size());
-    for (const Vec3& p : mesh.positions)
+    inside_.reserve(mesh.positions.size());
+    for (const Vec3& p : mesh.positions) {
       clip_.push_back(transform(options.transform, p));
+      inside_.push_back(inside_clip_volume(clip_.back(), planes_));
+    }
     screen_index_.assign(mesh.positions.size(), kUnmapped);
   }
 
   void add_triangle(const std::uint32_t corner[3], DrawReport& report, ScreenMesh& out) {
+    if (inside_[corner[0]] && inside_[corner[1]] && inside_[corner[2]]) {
+      for (int i = 0; i < 3; ++i)  // what clip_triangle() would return: the triangle unchanged
+        out.indices.push_back(mapped(corner[i], out));
+      return;
+    }
     const ClippedPolygon polygon =
         clip_triangle(clip_[corner[0]], clip_[corner[1]], clip_[corner[2]], planes_);
     switch (polygon.status) {
@@ -125,6 +139,7 @@ class VertexStage {
   GuardBandPlanes planes_;
   bool diffuse_;
   std::vector<Vec4> clip_;
+  std::vector<bool> inside_;  // inside_clip_volume() per vertex
   std::vector<std::uint32_t> screen_index_;
 };
 
@@ -175,6 +190,12 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
 
   const auto start = Clock::now();
   ScreenMesh screen;
+  screen.positions.reserve(mesh.positions.size());
+  screen.depth.reserve(mesh.positions.size());
+  screen.clip_w.reserve(mesh.positions.size());
+  screen.colors.reserve(mesh.positions.size());
+  if (options.shading == Shading::diffuse) screen.normals.reserve(mesh.positions.size());
+  screen.indices.reserve(3 * report.triangles);
   VertexStage stage(mesh, options, Viewport{target.width(), target.height()});
   for (std::size_t t = 0; t < report.triangles; ++t) {
     std::uint32_t corner[3];

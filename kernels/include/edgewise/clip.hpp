@@ -80,4 +80,10 @@ struct ClippedPolygon {
 ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
                              const GuardBandPlanes& planes);
 
+// Whether a vertex is finite, within kMaxClipCoordinate, at w > 0 and inside every plane (near,
+// far, guard band and the sides of the view). clip_triangle() returns a triangle whose three
+// vertices pass this test as ClipStatus::inside, bit for bit; callers test each vertex once
+// instead of clipping every triangle.
+bool inside_clip_volume(const Vec4& p, const GuardBandPlanes& planes);
+
 }  // namespace edgewise
