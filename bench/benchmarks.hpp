@@ -6,4 +6,8 @@ namespace edgewise::bench {
 // Coverage/<isa>/area:<px> for every supported ISA, the reference included.
 void register_coverage_benchmarks();
 
+// Shading/<isa>/area:<px> (the peer-comparable draw() workload) and
+// ShadingMethod/<isa>/<method>/<perspective>/area:<px>, for every supported ISA and the reference.
+void register_shading_benchmarks();
+
 }  // namespace edgewise::bench

@@ -8,6 +8,7 @@
 
 int main(int argc, char** argv) {
   edgewise::bench::register_coverage_benchmarks();
+  edgewise::bench::register_shading_benchmarks();
 
   std::string supported;
   for (edgewise::Isa isa : edgewise::supported_isas()) {

@@ -1,8 +1,16 @@
 #!/usr/bin/python3
-"""Summarize an edgewise-bench JSON file: median triangles/s and pixels/s per ISA and triangle
-area, the speedup over the scalar reference, and the comparison with published peer figures.
+"""Summarize edgewise-bench JSON files: median rates per ISA and triangle area, the speedup over
+the scalar reference, and the comparison with published peer figures and with the targets.
 
-Usage: /usr/bin/python3 bench/summarize.py bench/results/<cpu-model>/coverage.json
+- Coverage/*: triangles/s and pixels/s, against Intel Masked Occlusion Culling and the coverage
+  targets;
+- Shading/*: triangles/s, covered fragments/s and written pixels/s of draw(), against the
+  shading targets (AVX2, one core);
+- ShadingMethod/*: fragments/s per interpolation method and perspective mode, relative to the
+  production method (plane equations, perspective-correct).
+
+Usage: /usr/bin/python3 bench/summarize.py FILE.json [FILE.json ...]
+  e.g. bench/results/<cpu-model>/coverage.json bench/results/<cpu-model>/shading.json
 """
 
 import json
@@ -16,9 +24,22 @@ PEER_MOC = {8: 19e6, 64: 14e6, 1000: 4.9e6, 200000: 0.33e6}
 TARGET = {8: 50e6, 64: 25e6, 1000: 8e6, 200000: 0.5e6}
 # AVX2 must be at least this much faster than the reference on 1000-px triangles.
 TARGET_AVX2_OVER_REFERENCE_AT_1000 = 8.0
+# Shading targets (AVX2, one core): (counter, rate) per area; small triangles are bound by
+# per-triangle work, large ones by per-fragment work.
+SHADING_TARGET = {8: ("triangles", 35e6), 64: ("triangles", 15e6), 1000: ("fragments", 1.2e9),
+                  200000: ("fragments", 2e9)}
+# The reference draws the first 1/REFERENCE_SHARE of each shading set (bench/shading_bench.cpp).
+REFERENCE_SHARE = 16
+# The production interpolation setting, which the method table is relative to.
+BASELINE_METHOD = ("plane_equations", "correct")
 
 COVERAGE_NAME = re.compile(r"^Coverage/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
+SHADING_NAME = re.compile(r"^Shading/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
+METHOD_NAME = re.compile(r"^ShadingMethod/(?P<isa>[a-z0-9_]+)/(?P<method>[a-z_]+)/"
+                         r"(?P<perspective>[a-z]+)/area:(?P<area>\d+)(/min_time:[0-9.]+)?$")
 ISA_ORDER = ["reference", "sse2", "sse4_1", "avx2", "neon"]
+METHOD_ORDER = ["nearest_vertex", "inverse_distance", "subtriangle_areas", "edge_functions",
+                "scanline", "plane_equations"]
 
 
 def medians(benchmarks):
@@ -61,44 +82,47 @@ def ratio(a, b):
     return f"{a / b:.3g}x" if b else "-"
 
 
-def main(argv):
-    if len(argv) != 2:
-        print(__doc__.strip(), file=sys.stderr)
-        return 2
-    with open(argv[1], encoding="utf-8") as f:
-        data = json.load(f)
-    context = data.get("context", {})
-    results = medians(data.get("benchmarks", []))
+def cv_cell(entry):
+    return f"{100 * entry['cv']:.1f}%" if entry.get("cv") is not None else "-"
 
-    coverage = {}  # (area, isa) -> entry
+
+def isa_key(isa):
+    return ISA_ORDER.index(isa) if isa in ISA_ORDER else len(ISA_ORDER)
+
+
+def print_table(header, rows):
+    widths = [max(len(r[i]) for r in [header] + rows) for i in range(len(header))]
+    for row in [header, ["-" * w for w in widths]] + rows:
+        print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip())
+
+
+def collect(results, pattern, key):
+    """{key(match): entry} for the benchmarks whose name matches `pattern`."""
+    found = {}
     for name, entry in results.items():
-        match = COVERAGE_NAME.match(name)
+        match = pattern.match(name)
         if match:
-            coverage[(int(match["area"]), match["isa"])] = entry
-    if not coverage:
-        print(f"{argv[1]}: no Coverage/* benchmarks", file=sys.stderr)
-        return 1
+            found[key(match)] = entry
+    return found
 
+
+def print_context(path, data, results):
+    context = data.get("context", {})
     repetitions = next((e["repetitions"] for e in results.values() if "repetitions" in e), 1)
-    print("edgewise coverage-only rasterization, 1920x1080 target, one thread")
-    print(f"host {context.get('host_name', '?')}, {context.get('num_cpus', '?')} CPUs at "
-          f"{context.get('mhz_per_cpu', '?')} MHz, {context.get('date', '?')}")
-    print(f"median of {repetitions} repetitions (CPU time; cv: their coefficient of variation); "
-          f"active ISA "
+    print(f"{path}: host {context.get('host_name', '?')}, {context.get('num_cpus', '?')} CPUs at "
+          f"{context.get('mhz_per_cpu', '?')} MHz, {context.get('date', '?')}; median of "
+          f"{repetitions} repetitions (CPU time; cv: their coefficient of variation); active ISA "
           f"{context.get('edgewise_active_isa', '?')}")
-    if context.get("library_build_type") == "debug":
-        print("note: the Google Benchmark library itself was built as DEBUG (Debian's package); "
-              "this affects the harness only, not the measured code")
-    print()
+    return context.get("library_build_type") == "debug"
 
-    clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
+
+def print_coverage(coverage, clear):
+    print("Coverage-only rasterization (count_coverage), 1920x1080 target, one thread")
     clear_pixels = clear.get("pixels") if clear and "error" not in clear else None
-
     header = ["area px", "ISA", "triangles/s", "pixels/s", "cv", "vs reference", "vs MOC",
               "vs target", "of clear px/s"]
     rows = []
-    isas = sorted({isa for _, isa in coverage},
-                  key=lambda i: ISA_ORDER.index(i) if i in ISA_ORDER else len(ISA_ORDER))
+    isas = sorted({isa for _, isa in coverage}, key=isa_key)
     for area in sorted({a for a, _ in coverage}):
         reference = coverage.get((area, "reference"), {})
         for isa in isas:
@@ -110,16 +134,13 @@ def main(argv):
                 continue
             tps, pps = entry["triangles"], entry["pixels"]
             rows.append([
-                str(area), isa, si(tps, "/s"), si(pps, "/s"),
-                f"{100 * entry['cv']:.1f}%" if entry.get("cv") is not None else "-",
+                str(area), isa, si(tps, "/s"), si(pps, "/s"), cv_cell(entry),
                 ratio(tps, reference.get("triangles", 0)) if "error" not in reference else "-",
                 ratio(tps, PEER_MOC.get(area, 0)),
                 ratio(tps, TARGET.get(area, 0)),
                 f"{100 * pps / clear_pixels:.1f}%" if clear_pixels else "-",
             ])
-    widths = [max(len(r[i]) for r in [header] + rows) for i in range(len(header))]
-    for row in [header, ["-" * w for w in widths]] + rows:
-        print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip())
+    print_table(header, rows)
 
     print()
     print("peers (triangles/s): Intel Masked Occlusion Culling (AVX2, precise, 1 thread) "
@@ -139,6 +160,124 @@ def main(argv):
         verdict = "met" if speedup >= TARGET_AVX2_OVER_REFERENCE_AT_1000 else "NOT met"
         print(f"AVX2 over reference at 1000 px: {speedup:.1f}x "
               f"(target >= {TARGET_AVX2_OVER_REFERENCE_AT_1000:g}x: {verdict})")
+
+
+def target_text(area):
+    counter, rate = SHADING_TARGET[area]
+    return f"{si(rate, '')} {counter}/s"
+
+
+def print_shading(shading):
+    print("Shaded drawing (draw(): orthographic, depth less + write, Gouraud), 1920x1080 "
+          "RGBA8 + float32 depth, one thread")
+    header = ["area px", "ISA", "triangles/s", "fragments/s", "written/s", "cv", "vertex stage",
+              "vs reference", "target (AVX2)", "vs target"]
+    rows = []
+    isas = sorted({isa for _, isa in shading}, key=isa_key)
+    for area in sorted({a for a, _ in shading}):
+        reference = shading.get((area, "reference"), {})
+        for isa in isas:
+            entry = shading.get((area, isa))
+            if entry is None:
+                continue
+            if "error" in entry:
+                rows.append([str(area), isa, "ERROR: " + entry["error"]] + [""] * 7)
+                continue
+            counter, rate = SHADING_TARGET.get(area, (None, 0))
+            rows.append([
+                str(area), isa, si(entry["triangles"], "/s"), si(entry["fragments"], "/s"),
+                si(entry["written"], "/s"), cv_cell(entry),
+                f"{100 * entry['vertex_share']:.1f}%" if "vertex_share" in entry else "-",
+                ratio(entry["triangles"], reference["triangles"])
+                if "triangles" in reference else "-",
+                target_text(area) if counter else "-",
+                ratio(entry[counter], rate) if counter else "-",
+            ])
+    print_table(header, rows)
+
+    print()
+    print("fragments: covered samples; written: fragments that passed the depth test; vertex "
+          "stage: share of draw()'s time spent transforming, clipping and mapping vertices")
+    print(f"the reference draws the first 1/{REFERENCE_SHARE} of each set (its rates are per "
+          "triangle and per fragment, so they compare; its overdraw is lower)")
+    for area in sorted(SHADING_TARGET):
+        entry = shading.get((area, "avx2"))
+        if entry is None or "error" in entry:
+            continue
+        counter, rate = SHADING_TARGET[area]
+        verdict = "met" if entry[counter] >= rate else "NOT met"
+        print(f"AVX2 at {area} px: {si(entry[counter], '')} {counter}/s "
+              f"(target >= {target_text(area)}: {verdict}, {entry[counter] / rate:.2f}x)")
+
+
+def print_methods(methods):
+    print("Interpolation methods (draw() through a perspective camera, Gouraud), covered "
+          "fragments/s and the ratio to "
+          f"{BASELINE_METHOD[0]}/{BASELINE_METHOD[1]} on the same ISA")
+    isas = sorted({k[3] for k in methods}, key=isa_key)
+    header = ["area px", "method", "perspective"] + isas
+    rows = []
+    methods_seen = sorted({k[1] for k in methods},
+                          key=lambda m: METHOD_ORDER.index(m) if m in METHOD_ORDER else 99)
+    for area in sorted({k[0] for k in methods}):
+        for method in methods_seen:
+            for perspective in ("correct", "affine"):
+                row = [str(area), method, perspective]
+                present = False
+                for isa in isas:
+                    entry = methods.get((area, method, perspective, isa))
+                    baseline = methods.get((area, *BASELINE_METHOD, isa), {})
+                    if entry is None:
+                        row.append("-")
+                        continue
+                    present = True
+                    if "error" in entry:
+                        row.append("ERROR: " + entry["error"])
+                    elif "fragments" in baseline:
+                        row.append(f"{si(entry['fragments'], '/s')} "
+                                   f"({entry['fragments'] / baseline['fragments']:.2f}x)")
+                    else:
+                        row.append(si(entry["fragments"], "/s"))
+                if present:
+                    rows.append(row)
+    print_table(header, rows)
+    print()
+    print("the same screen triangles as Shading/ at that area, with w varying across each "
+          "triangle; affine skips the perspective divide")
+
+
+def main(argv):
+    if len(argv) < 2:
+        print(__doc__.strip(), file=sys.stderr)
+        return 2
+    results = {}
+    debug_library = False
+    for path in argv[1:]:
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+        file_results = medians(data.get("benchmarks", []))
+        debug_library = print_context(path, data, file_results) or debug_library
+        results.update(file_results)
+    if debug_library:
+        print("note: the Google Benchmark library itself was built as DEBUG (Debian's package); "
+              "this affects the harness only, not the measured code")
+
+    coverage = collect(results, COVERAGE_NAME, lambda m: (int(m["area"]), m["isa"]))
+    shading = collect(results, SHADING_NAME, lambda m: (int(m["area"]), m["isa"]))
+    methods = collect(results, METHOD_NAME,
+                      lambda m: (int(m["area"]), m["method"], m["perspective"], m["isa"]))
+    clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
+    if not (coverage or shading or methods):
+        print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/* or ShadingMethod/* benchmarks",
+              file=sys.stderr)
+        return 1
+
+    for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
+                                       (print_shading, shading, (shading,)),
+                                       (print_methods, methods, (methods,))):
+        if found:
+            print()
+            title_printer(*args)
     return 0
 
 
