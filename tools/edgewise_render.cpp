@@ -1,0 +1,360 @@
+// edgewise-render: draws an OBJ mesh or a built-in scene with edgewise::draw(), writes the image
+// (PNG or EXR) and prints what the pipeline did: triangles at each stage, fragments, and the time
+// of each stage. --compare-isas checks every ISA against the scalar reference on the same frame.
+//
+// Timing: the framebuffer and the mesh's spans are set up once; each of the --repeat frames is a
+// clear (timed apart) followed by one draw() call, so the frame time is the draw call alone.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <new>
+#include <optional>
+#include <span>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "edgewise/edgewise.hpp"
+#include "render/builtin_scenes.hpp"
+#include "render/camera_setup.hpp"
+#include "render/command_line.hpp"
+#include "render/image_writer.hpp"
+#include "render/usage_error.hpp"
+#include "scene/obj_loader.hpp"
+
+namespace {
+
+using namespace edgewise;
+using namespace edgewise::render_tool;
+using Clock = std::chrono::steady_clock;
+
+constexpr Vec4 kBackground{0.05f, 0.06f, 0.08f, 1.0f};
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// What is drawn: the mesh, the camera it comes with (built-in scenes), and its name.
+struct LoadedScene {
+  scene::Mesh mesh;
+  std::optional<scene::SceneCamera> camera;
+  std::string description;
+};
+
+LoadedScene load_scene(const RenderSettings& settings) {
+  if (!settings.obj_path) {
+    scene::Scene built = make_builtin_scene(settings.scene_name);
+    return {std::move(built.mesh), built.camera, "scene " + settings.scene_name};
+  }
+  scene::MeshResult result = scene::load_obj(*settings.obj_path);
+  if (!result) throw std::runtime_error(std::string(result.error()));
+  std::istringstream warnings(result.warnings());
+  for (std::string line; std::getline(warnings, line);) {
+    if (!line.empty()) std::cerr << "edgewise-render: warning: " << line << '\n';
+  }
+  scene::Mesh mesh = std::move(result).mesh();
+  // Diffuse shading needs normals. The loader computes smooth ones for a file that lacks some;
+  // this only keeps the tool independent of that promise.
+  if (mesh.normals.empty()) scene::compute_smooth_normals(mesh);
+  return {std::move(mesh), std::nullopt, "OBJ " + *settings.obj_path};
+}
+
+DrawMesh draw_mesh_of(const scene::Mesh& mesh) {
+  return {mesh.positions, mesh.colors, mesh.normals, mesh.indices};
+}
+
+// The farthest value for the depth test, so that the first surface drawn always passes.
+float clear_depth(DepthTest test) {
+  return test == DepthTest::greater ? 0.0f : 1.0f;
+}
+
+Framebuffer make_framebuffer(std::int32_t width, std::int32_t height) {
+  try {
+    return Framebuffer(width, height);
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error("not enough memory for a " + std::to_string(width) + "x" +
+                             std::to_string(height) + " framebuffer");
+  }
+}
+
+// --repeat frames of one ISA; the framebuffer holds the last one.
+struct FrameTimes {
+  DrawReport report;  // of the last frame (every frame draws the same)
+  double clear = 0.0, vertex = 0.0, raster = 0.0, frame = 0.0;  // medians, seconds
+  double fastest_frame = 0.0;  // on a shared machine, the least disturbed frame
+};
+
+bool same_counts(const DrawReport& a, const DrawReport& b) {
+  return a.triangles == b.triangles && a.clipped == b.clipped &&
+         a.clip_triangles == b.clip_triangles && a.outside == b.outside && a.culled == b.culled &&
+         a.errors == b.errors && a.rasterized == b.rasterized && a.fragments == b.fragments &&
+         a.fragments_passed == b.fragments_passed;
+}
+
+FrameTimes render_frames(Framebuffer& framebuffer, const DrawMesh& mesh, const DrawOptions& options,
+                         int repeat) {
+  std::vector<double> clear(static_cast<std::size_t>(repeat)), vertex(clear.size()),
+      raster(clear.size()), frame(clear.size());
+  FrameTimes times;
+  for (std::size_t r = 0; r < clear.size(); ++r) {
+    const auto start = Clock::now();
+    framebuffer.clear(kBackground, clear_depth(options.depth_test));
+    clear[r] = seconds_since(start);
+    const auto draw_start = Clock::now();
+    const DrawReport report = draw(framebuffer, mesh, options);
+    frame[r] = seconds_since(draw_start);
+    vertex[r] = report.vertex_seconds;
+    raster[r] = report.raster_seconds;
+    if (r > 0 && !same_counts(report, times.report)) {
+      throw std::logic_error("draw() counted differently on two identical frames");
+    }
+    times.report = report;
+  }
+  times.clear = median(clear);
+  times.vertex = median(vertex);
+  times.raster = median(raster);
+  times.frame = median(frame);
+  times.fastest_frame = *std::min_element(frame.begin(), frame.end());
+  return times;
+}
+
+// ---- Printing ---------------------------------------------------------------------------------
+
+constexpr int kLabelWidth = 20, kValueWidth = 12;
+
+// One aligned line: label, right-aligned value, optional note.
+void print_row(std::string_view label, const std::string& value, std::string_view note = {}) {
+  std::cout << "  " << std::left << std::setw(kLabelWidth) << label << std::right
+            << std::setw(kValueWidth) << value;
+  if (!note.empty()) std::cout << "  " << note;
+  std::cout << '\n';
+}
+
+void print_count(std::string_view label, std::uint64_t value, std::string_view note = {}) {
+  print_row(label, std::to_string(value), note);
+}
+
+std::string milliseconds(double seconds) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << seconds * 1e3 << " ms";
+  return out.str();
+}
+
+void print_time(std::string_view label, double seconds, std::string_view note = {}) {
+  print_row(label, milliseconds(seconds), note);
+}
+
+std::string vector_text(const Vec3& v) {
+  std::ostringstream out;
+  out << '(' << v.x << ", " << v.y << ", " << v.z << ')';
+  return out.str();
+}
+
+void print_setup(const LoadedScene& loaded, const RenderSettings& settings,
+                 const ResolvedCamera& camera, std::string_view isas) {
+  const scene::SceneCamera& view = camera.view;
+  const DrawOptions& d = settings.draw;
+  std::cout << "edgewise-render: " << loaded.description << ", " << settings.width << "x"
+            << settings.height << ", " << isas << '\n'
+            << "  camera    " << (camera.orthographic ? "orthographic" : "perspective") << ", eye "
+            << vector_text(view.eye) << ", target " << vector_text(view.target) << ", up "
+            << vector_text(view.up) << ", ";
+  if (camera.orthographic) {
+    std::cout << "half height " << camera.ortho_half_height;
+  } else {
+    std::cout << "fov " << view.vertical_fov_degrees;
+  }
+  std::cout << ", near " << view.near_plane << ", far " << view.far_plane << '\n'
+            << "  pipeline  " << shading_name(d.shading) << " shading, "
+            << interpolation_method_name(d.interpolation) << ", perspective "
+            << perspective_name(d.perspective) << ", depth " << depth_test_name(d.depth_test)
+            << (d.depth_write ? " with writes" : " without writes") << ", cull "
+            << cull_mode_name(d.cull) << ", light " << vector_text(d.light_direction) << '\n';
+}
+
+void print_counts(const DrawReport& report) {
+  std::cout << "triangles\n";
+  print_count("in", report.triangles);
+  print_count("clipped", report.clipped,
+              "into " + std::to_string(report.clip_triangles) + " triangles");
+  print_count("outside", report.outside);
+  print_count("culled", report.culled);
+  print_count("errors", report.errors);
+  print_count("rasterized", report.rasterized);
+  print_count("fragments", report.fragments);
+  print_count("fragments passed", report.fragments_passed);
+}
+
+// ---- The two modes ----------------------------------------------------------------------------
+
+int render(const RenderSettings& settings, const LoadedScene& loaded, const DrawMesh& mesh,
+           const ResolvedCamera& camera, double load_seconds, Clock::time_point start) {
+  DrawOptions options = settings.draw;
+  options.transform = camera.transform;
+  const Isa isa = options.isa.value_or(active_isa());
+  options.isa = isa;
+  print_setup(loaded, settings, camera, "ISA " + std::string(isa_name(isa)));
+
+  Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
+  const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
+  print_counts(times.report);
+
+  double write_seconds = 0.0;
+  if (settings.output) {
+    const auto write_start = Clock::now();
+    write_image(*settings.output, framebuffer);
+    write_seconds = seconds_since(write_start);
+  }
+  std::cout << "time"
+            << (settings.repeat > 1 ? " (median of " + std::to_string(settings.repeat) + " frames)"
+                                    : std::string())
+            << '\n';
+  print_time("load scene", load_seconds);
+  print_time("clear", times.clear, "not part of the frame");
+  print_time("vertex stage", times.vertex, "transform, clipping, screen mapping");
+  print_time("raster + shade", times.raster, "setup, coverage, depth, shading");
+  print_time("frame", times.frame,
+             "the draw() call" + (settings.repeat > 1
+                                      ? "; fastest frame " + milliseconds(times.fastest_frame)
+                                      : std::string()));
+  if (settings.output) {
+    print_time("image write", write_seconds, *settings.output);
+  } else {
+    print_row("image write", "-", "no -o given");
+  }
+  print_time("total", seconds_since(start), "everything after option parsing");
+  return 0;
+}
+
+struct Difference {
+  std::uint64_t depth_mismatches = 0;  // pixels whose depth bits differ
+  std::uint64_t colour_pixels = 0;     // pixels whose colour differs
+  int max_colour_codes = 0;            // largest difference of one component, in 1/255
+};
+
+Difference compare_images(std::span<const std::uint8_t> rgba, std::span<const float> depth,
+                          std::span<const std::uint8_t> reference_rgba,
+                          std::span<const float> reference_depth) {
+  Difference d;
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    d.depth_mismatches +=
+        std::bit_cast<std::uint32_t>(depth[i]) != std::bit_cast<std::uint32_t>(reference_depth[i]);
+    int pixel_max = 0;
+    for (std::size_t c = 0; c < 4; ++c) {
+      pixel_max =
+          std::max(pixel_max, std::abs(int{rgba[4 * i + c]} - int{reference_rgba[4 * i + c]}));
+    }
+    d.colour_pixels += pixel_max > 0;
+    d.max_colour_codes = std::max(d.max_colour_codes, pixel_max);
+  }
+  return d;
+}
+
+// A row of the --compare-isas table: the ISA left-aligned, the other columns right-aligned.
+void print_isa_row(const std::array<std::string, 7>& cells) {
+  constexpr int kWidths[] = {11, 11, 11, 18, 20, 17, 8};
+  std::cout << "  " << std::left << std::setw(kWidths[0]) << cells[0] << std::right;
+  for (std::size_t c = 1; c < cells.size(); ++c)
+    std::cout << std::setw(kWidths[c]) << cells[c];
+  std::cout << '\n';
+}
+
+int compare_isas(const RenderSettings& settings, const LoadedScene& loaded, const DrawMesh& mesh,
+                 const ResolvedCamera& camera) {
+  DrawOptions options = settings.draw;
+  options.transform = camera.transform;
+  print_setup(loaded, settings, camera, "every supported ISA against the reference");
+
+  Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
+  const std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
+  std::vector<std::uint8_t> reference_rgba(pixels * 4), rgba(pixels * 4);
+  std::vector<float> reference_depth(pixels), depth(pixels);
+
+  options.isa = Isa::reference;
+  const FrameTimes reference = render_frames(framebuffer, mesh, options, 1);
+  framebuffer.read_rgba8(reference_rgba);
+  framebuffer.read_depth(reference_depth);
+  print_counts(reference.report);
+
+  std::cout << "ISAs against the reference (frame: median of " << settings.repeat
+            << " frames; the reference: 1 frame)\n";
+  print_isa_row({"ISA", "frame", "fastest", "depth mismatches", "colour pixels diff",
+                 "max colour diff", "counts"});
+  print_isa_row({"reference", milliseconds(reference.frame), "-", "-", "-", "-", "-"});
+  std::uint64_t depth_mismatches = 0;
+  int max_colour_codes = 0;
+  bool counts_match = true;
+  int compared = 0;
+  for (Isa isa : supported_isas()) {
+    if (isa == Isa::reference) continue;
+    options.isa = isa;
+    const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
+    framebuffer.read_rgba8(rgba);
+    framebuffer.read_depth(depth);
+    const Difference d = compare_images(rgba, depth, reference_rgba, reference_depth);
+    const bool same = same_counts(times.report, reference.report);
+    print_isa_row(
+        {std::string(isa_name(isa)), milliseconds(times.frame), milliseconds(times.fastest_frame),
+         std::to_string(d.depth_mismatches), std::to_string(d.colour_pixels),
+         std::to_string(d.max_colour_codes) + (d.max_colour_codes == 1 ? " code" : " codes"),
+         same ? "same" : "DIFFER"});
+    depth_mismatches += d.depth_mismatches;
+    max_colour_codes = std::max(max_colour_codes, d.max_colour_codes);
+    counts_match = counts_match && same;
+    ++compared;
+  }
+  const bool ok = depth_mismatches == 0 && counts_match;
+  std::cout << "compare-isas: " << compared << " ISAs against the reference, " << depth_mismatches
+            << " depth mismatches, max colour difference " << max_colour_codes
+            << (max_colour_codes == 1 ? " code" : " codes") << ", counts "
+            << (counts_match ? "identical" : "DIFFERENT") << (ok ? "" : ": FAILED") << '\n';
+  return ok ? 0 : 1;
+}
+
+int run(std::span<char* const> args) {
+  const RenderSettings settings = parse_command_line(args);
+  if (settings.help) {
+    std::cout << kUsage;
+    return 0;
+  }
+  const auto start = Clock::now();
+  const LoadedScene loaded = load_scene(settings);
+  const double load_seconds = seconds_since(start);
+  const std::optional<scene::Box3> bounds = scene::bounding_box(loaded.mesh);
+  if (!bounds) {
+    throw std::runtime_error(loaded.description + ": no vertex with finite coordinates");
+  }
+  const ResolvedCamera camera =
+      resolve_camera(settings.camera, loaded.camera, *bounds,
+                     static_cast<float>(settings.width) / static_cast<float>(settings.height));
+  const DrawMesh mesh = draw_mesh_of(loaded.mesh);
+  return settings.compare_isas ? compare_isas(settings, loaded, mesh, camera)
+                               : render(settings, loaded, mesh, camera, load_seconds, start);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::span<char* const>(argv + 1, argv + argc));
+  } catch (const UsageError& e) {
+    std::cerr << "edgewise-render: " << e.what() << " (edgewise-render --help for usage)\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "edgewise-render: " << e.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,36 @@
+// The camera a render uses: the values given on the command line, the rest from the scene's own
+// camera or, for a mesh without one (an OBJ file), from a camera that frames its bounding box.
+#pragma once
+
+#include <optional>
+
+#include "edgewise/camera.hpp"
+#include "render/command_line.hpp"
+#include "scene/mesh.hpp"
+#include "scene/procedural.hpp"
+
+namespace edgewise::render_tool {
+
+struct ResolvedCamera {
+  scene::SceneCamera view;  // eye, target, up, field of view, near and far as used
+  bool orthographic = false;
+  float ortho_half_height = 0.0f;  // of the orthographic view volume, world units
+  Mat4 transform;                  // world space to clip space
+};
+
+// Without a scene camera: the target is the box's centre, the eye looks at it from the front,
+// a little from above and the right (direction (0.45, 0.35, 1)), far enough that the box's
+// bounding sphere fits the narrower field of view with 5% to spare; the field of view is 45
+// degrees. Near and far, unless given, hold the whole box: for a perspective camera the nearest
+// box corner's depth (at least far / 10^4) to the farthest's, for an orthographic one the same
+// range with 1% of its length added at both ends (an orthographic near plane may lie behind the
+// eye). The orthographic view's half height is what the perspective camera sees at the target's
+// distance: distance * tan(fov / 2).
+//
+// Throws UsageError for a camera that cannot be built: eye at the target, up parallel to the
+// view direction, near not below far, or a perspective near plane not in front of the eye.
+ResolvedCamera resolve_camera(const CameraOverrides& overrides,
+                              const std::optional<scene::SceneCamera>& scene_camera,
+                              const scene::Box3& bounds, float aspect);
+
+}  // namespace edgewise::render_tool

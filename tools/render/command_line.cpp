@@ -1,0 +1,267 @@
+#include "render/command_line.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <system_error>
+
+#include "edgewise/interpolation.hpp"
+#include "edgewise/isa.hpp"
+#include "edgewise/raster.hpp"
+#include "render/builtin_scenes.hpp"
+#include "render/image_writer.hpp"
+#include "render/usage_error.hpp"
+
+namespace edgewise::render_tool {
+
+const std::string_view kUsage =
+    "usage: edgewise-render [--obj FILE | --scene default|sphere|torus|ground] [options]\n"
+    "\n"
+    "Renders a mesh with edgewise::draw() and prints the pipeline's counts and stage times.\n"
+    "\n"
+    "Camera (default: the built-in scene's camera; for --obj, one framing the mesh's box):\n"
+    "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z\n"
+    "  --fov DEGREES          vertical field of view, in (0, 180)\n"
+    "  --near N --far F       clip distances along the view direction\n"
+    "  --ortho                orthographic: shows at every depth what the perspective camera\n"
+    "                         shows at the target's distance; near and far hold the scene\n"
+    "Image and pipeline:\n"
+    "  --size WxH             default 1280x720\n"
+    "  --method NAME          nearest_vertex, inverse_distance, subtriangle_areas,\n"
+    "                         edge_functions, scanline, plane_equations (default)\n"
+    "  --perspective correct|affine   attribute interpolation (default correct)\n"
+    "  --shading flat|gouraud|diffuse (default diffuse)\n"
+    "  --depth-test less|less_equal|greater|always|never (default less; the depth buffer is\n"
+    "                         cleared to 0 for greater, to 1 otherwise)\n"
+    "  --no-depth-write\n"
+    "  --cull none|cw|ccw     winding on screen to remove (default cw: the back faces)\n"
+    "  --light X,Y,Z          direction towards the light, world space (0,0,0: ambient only)\n"
+    "  --isa NAME | --reference   default: the best ISA of this CPU (or EDGEWISE_ISA)\n"
+    "Running:\n"
+    "  --repeat N             draw N times into the same framebuffer, report median times\n"
+    "  -o FILE                write FILE.png (RGBA8) or FILE.exr (float R, G, B, A and the\n"
+    "                         depth buffer as channel Z)\n"
+    "  --compare-isas         render with the reference once and with every supported ISA\n"
+    "                         (--repeat times); report depth mismatches and colour differences;\n"
+    "                         exit status 1 if any depth value or count differs\n";
+
+namespace {
+
+std::string quoted(std::string_view text) {
+  return "'" + std::string(text) + "'";
+}
+
+std::optional<float> parse_finite_float(std::string_view text) {
+  float value = 0.0f;
+  const char* last = text.data() + text.size();
+  const auto [end, ec] = std::from_chars(text.data(), last, value);
+  if (ec != std::errc() || end != last || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+float parse_number(std::string_view option, std::string_view text) {
+  const std::optional<float> value = parse_finite_float(text);
+  if (!value) {
+    throw UsageError(std::string(option) + " " + quoted(text) + " is not a finite number");
+  }
+  return *value;
+}
+
+Vec3 parse_vector(std::string_view option, std::string_view text) {
+  float xyz[3];
+  std::string_view rest = text;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = i < 2 ? rest.find(',') : std::string_view::npos;
+    const std::optional<float> value = parse_finite_float(rest.substr(0, comma));
+    if (!value || (i < 2 && comma == std::string_view::npos)) {
+      throw UsageError(std::string(option) + " " + quoted(text) +
+                       " is not three finite numbers X,Y,Z");
+    }
+    xyz[i] = *value;
+    if (i < 2) rest.remove_prefix(comma + 1);
+  }
+  return {xyz[0], xyz[1], xyz[2]};
+}
+
+std::int32_t parse_side(std::string_view text, bool& ok) {
+  std::int32_t value = 0;
+  const char* last = text.data() + text.size();
+  const auto [end, ec] = std::from_chars(text.data(), last, value);
+  ok = ec == std::errc() && end == last && value >= 1 && value <= kMaxTargetSize;
+  return value;
+}
+
+void parse_size(std::string_view text, RenderSettings& settings) {
+  const std::size_t x = text.find('x');
+  bool width_ok = false, height_ok = false;
+  if (x != std::string_view::npos) {
+    settings.width = parse_side(text.substr(0, x), width_ok);
+    settings.height = parse_side(text.substr(x + 1), height_ok);
+  }
+  if (!width_ok || !height_ok) {
+    throw UsageError("--size " + quoted(text) + " is not WxH with sides 1.." +
+                     std::to_string(kMaxTargetSize));
+  }
+  if (std::int64_t{settings.width} * settings.height > kMaxPixels) {
+    throw UsageError("--size " + quoted(text) + " has more than " + std::to_string(kMaxPixels) +
+                     " pixels");
+  }
+}
+
+std::string supported_isa_list() {
+  std::string list;
+  for (Isa isa : supported_isas()) {
+    if (!list.empty()) list += ", ";
+    list += isa_name(isa);
+  }
+  return list;
+}
+
+Isa parse_isa_option(std::string_view name) {
+  const std::optional<Isa> isa = parse_isa(name);
+  if (!isa) {
+    throw UsageError("unknown ISA " + quoted(name) + "; this machine supports " +
+                     supported_isa_list());
+  }
+  if (!isa_supported(*isa)) {
+    throw UsageError("ISA " + std::string(name) +
+                     " is not supported on this machine; it supports " + supported_isa_list());
+  }
+  return *isa;
+}
+
+// `parse` is one of the library's name parsers; `names` lists the accepted values.
+template <class Parse>
+auto parse_named(std::string_view option, std::string_view text, Parse parse,
+                 std::string_view names) {
+  const auto value = parse(text);
+  if (!value) {
+    throw UsageError("unknown " + std::string(option) + " value " + quoted(text) + "; expected " +
+                     std::string(names));
+  }
+  return *value;
+}
+
+std::optional<CullMode> parse_cull_mode(std::string_view name) {
+  for (CullMode mode : {CullMode::none, CullMode::clockwise, CullMode::counter_clockwise}) {
+    if (cull_mode_name(mode) == name) return mode;
+  }
+  return std::nullopt;
+}
+
+int parse_repeat(std::string_view text) {
+  int value = 0;
+  const char* last = text.data() + text.size();
+  const auto [end, ec] = std::from_chars(text.data(), last, value);
+  if (ec != std::errc() || end != last || value < 1 || value > kMaxRepeat) {
+    throw UsageError("--repeat " + quoted(text) + " is not an integer in 1.." +
+                     std::to_string(kMaxRepeat));
+  }
+  return value;
+}
+
+}  // namespace
+
+std::string_view cull_mode_name(CullMode mode) {
+  switch (mode) {
+    case CullMode::none:
+      return "none";
+    case CullMode::clockwise:
+      return "cw";
+    case CullMode::counter_clockwise:
+      return "ccw";
+  }
+  return "unknown";
+}
+
+RenderSettings parse_command_line(std::span<char* const> args) {
+  RenderSettings settings;
+  bool scene_given = false, isa_given = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string_view arg = args[i];
+    const auto value = [&]() -> std::string_view {
+      if (i + 1 == args.size()) throw UsageError(std::string(arg) + " needs a value");
+      return args[++i];
+    };
+    const auto set_isa = [&](Isa isa) {
+      if (isa_given) throw UsageError("give at most one of --isa and --reference");
+      isa_given = true;
+      settings.draw.isa = isa;
+    };
+    CameraOverrides& camera = settings.camera;
+    if (arg == "-h" || arg == "--help") {
+      settings.help = true;
+    } else if (arg == "--obj") {
+      settings.obj_path = std::string(value());
+    } else if (arg == "--scene") {
+      const std::string_view name = value();
+      if (!is_builtin_scene(name)) {
+        throw UsageError("unknown --scene value " + quoted(name) + "; expected " +
+                         builtin_scene_list());
+      }
+      settings.scene_name = std::string(name);
+      scene_given = true;
+    } else if (arg == "--eye") {
+      camera.eye = parse_vector(arg, value());
+    } else if (arg == "--target") {
+      camera.target = parse_vector(arg, value());
+    } else if (arg == "--up") {
+      camera.up = parse_vector(arg, value());
+    } else if (arg == "--fov") {
+      const std::string_view text = value();
+      camera.fov_degrees = parse_number(arg, text);
+      if (!(*camera.fov_degrees > 0.0f && *camera.fov_degrees < 180.0f)) {
+        throw UsageError("--fov " + quoted(text) + " is not in (0, 180) degrees");
+      }
+    } else if (arg == "--near") {
+      camera.near_plane = parse_number(arg, value());
+    } else if (arg == "--far") {
+      camera.far_plane = parse_number(arg, value());
+    } else if (arg == "--ortho") {
+      camera.orthographic = true;
+    } else if (arg == "--size") {
+      parse_size(value(), settings);
+    } else if (arg == "--method") {
+      settings.draw.interpolation =
+          parse_named(arg, value(), parse_interpolation_method,
+                      "nearest_vertex, inverse_distance, subtriangle_areas, edge_functions, "
+                      "scanline or plane_equations");
+    } else if (arg == "--perspective") {
+      settings.draw.perspective = parse_named(arg, value(), parse_perspective, "correct or affine");
+    } else if (arg == "--shading") {
+      settings.draw.shading = parse_named(arg, value(), parse_shading, "flat, gouraud or diffuse");
+    } else if (arg == "--depth-test") {
+      settings.draw.depth_test =
+          parse_named(arg, value(), parse_depth_test, "less, less_equal, greater, always or never");
+    } else if (arg == "--no-depth-write") {
+      settings.draw.depth_write = false;
+    } else if (arg == "--cull") {
+      settings.draw.cull = parse_named(arg, value(), parse_cull_mode, "none, cw or ccw");
+    } else if (arg == "--light") {
+      settings.draw.light_direction = parse_vector(arg, value());
+    } else if (arg == "--isa") {
+      set_isa(parse_isa_option(value()));
+    } else if (arg == "--reference") {
+      set_isa(Isa::reference);
+    } else if (arg == "--repeat") {
+      settings.repeat = parse_repeat(value());
+    } else if (arg == "-o") {
+      const std::string_view path = value();
+      image_format_for(path);  // refuse an unknown extension before any work
+      settings.output = std::string(path);
+    } else if (arg == "--compare-isas") {
+      settings.compare_isas = true;
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw UsageError("unknown option " + quoted(arg));
+    } else {
+      throw UsageError("unexpected argument " + quoted(arg));
+    }
+  }
+  if (settings.obj_path && scene_given) throw UsageError("give either --obj or --scene, not both");
+  if (settings.compare_isas && (isa_given || settings.output)) {
+    throw UsageError("--compare-isas takes no --isa, --reference or -o");
+  }
+  return settings;
+}
+
+}  // namespace edgewise::render_tool

@@ -1,0 +1,65 @@
+// edgewise-render's command line: every option parsed and range-checked up front, so that a typo
+// costs no loading or rendering. Mistakes throw UsageError naming the option and the value.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "edgewise/render.hpp"
+#include "edgewise/vector.hpp"
+
+namespace edgewise::render_tool {
+
+extern const std::string_view kUsage;
+
+// Camera values given on the command line; the others come from the scene (camera_setup.hpp).
+struct CameraOverrides {
+  std::optional<Vec3> eye, target, up;
+  std::optional<float> fov_degrees;  // in (0, 180)
+  std::optional<float> near_plane, far_plane;
+  bool orthographic = false;
+};
+
+// Back faces are culled by default. Meshes wind their front faces counter-clockwise as seen
+// from the front (tools/scene/mesh.hpp); the projection keeps what the eye sees, so on screen they
+// still look counter-clockwise. The viewport's y flip only changes the sign of the winding
+// formula, which raster.hpp's CullMode already defines in y-down screen coordinates: front faces
+// are CullMode::counter_clockwise there, and the back faces, to remove, clockwise.
+inline constexpr CullMode kBackFaceCull = CullMode::clockwise;
+
+// Towards the light in world space (where the meshes' normals are): above, left of and in front
+// of the built-in scenes' cameras.
+inline constexpr Vec3 kDefaultLight{-0.45f, 0.8f, 0.55f};
+
+struct RenderSettings {
+  std::optional<std::string> obj_path;  // --obj; otherwise the built-in scene below
+  std::string scene_name = "default";   // --scene
+  CameraOverrides camera;
+  std::int32_t width = 1280, height = 720;
+  // Everything but the transform, which the camera gives.
+  DrawOptions draw = [] {
+    DrawOptions options;
+    options.shading = Shading::diffuse;
+    options.cull = kBackFaceCull;
+    options.light_direction = kDefaultLight;
+    return options;
+  }();
+  int repeat = 1;
+  std::optional<std::string> output;  // -o
+  bool compare_isas = false;
+  bool help = false;
+};
+
+inline constexpr int kMaxRepeat = 10000;
+// A framebuffer takes 8 bytes per pixel, and writing it out up to 20 more: beyond 2^28 pixels
+// (16384 x 16384) the tool refuses, rather than let the system's out-of-memory killer decide.
+inline constexpr std::int64_t kMaxPixels = std::int64_t{1} << 28;
+
+RenderSettings parse_command_line(std::span<char* const> args);
+
+std::string_view cull_mode_name(CullMode mode);
+
+}  // namespace edgewise::render_tool

@@ -1,0 +1,23 @@
+// Writing a rendered Framebuffer to an image file through OpenImageIO.
+//
+//   .png  8-bit RGBA, the framebuffer's bytes as they are (linear values v / 255).
+//   .exr  32-bit float channels R, G, B, A (v / 255) and Z, the depth buffer (z/w in [0, 1],
+//         the clear value where nothing was drawn), in one file.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "edgewise/framebuffer.hpp"
+
+namespace edgewise::render_tool {
+
+enum class ImageFormat { png, exr };
+
+// By the file's extension, in any letter case. Throws UsageError for any other extension.
+ImageFormat image_format_for(std::string_view path);
+
+// Throws std::runtime_error("PATH: reason") when the file cannot be written.
+void write_image(const std::string& path, const Framebuffer& framebuffer);
+
+}  // namespace edgewise::render_tool
