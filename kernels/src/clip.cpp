@@ -97,11 +97,16 @@ GuardBandPlanes guard_band_planes(const Viewport& viewport) {
           static_cast<float>(1.0 - y_span), static_cast<float>(1.0 + y_span)};
 }
 
-bool inside_clip_volume(const Vec4& p, const GuardBandPlanes& planes) {
+ClipClass classify_clip_vertex(const Vec4& p, const GuardBandPlanes& planes) {
+  ClipClass result;
   for (float c : {p.x, p.y, p.z, p.w}) {
-    if (!std::isfinite(c) || std::fabs(c) > kMaxClipCoordinate) return false;
+    if (!std::isfinite(c) || std::fabs(c) > kMaxClipCoordinate) return result;
   }
-  return p.w > 0.0f && outcode(p, planes) == 0;
+  const unsigned code = outcode(p, planes);
+  result.checked = true;
+  result.outside_frustum = static_cast<std::uint16_t>(code & kFrustumBits);
+  result.inside = p.w > 0.0f && code == 0;
+  return result;
 }
 
 ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,

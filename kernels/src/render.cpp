@@ -58,19 +58,29 @@ class VertexStage {
         planes_(guard_band_planes(viewport)),
         diffuse_(options.shading == Shading::diffuse) {
     clip_.reserve(mesh.positions.size());
-    inside_.reserve(mesh.positions.size());
+    class_.reserve(mesh.positions.size());
     for (const Vec3& p : mesh.positions) {
       clip_.push_back(transform(options.transform, p));
-      inside_.push_back(inside_clip_volume(clip_.back(), planes_));
+      class_.push_back(classify_clip_vertex(clip_.back(), planes_));
     }
     screen_index_.assign(mesh.positions.size(), kUnmapped);
   }
 
   void add_triangle(const std::uint32_t corner[3], DrawReport& report, ScreenMesh& out) {
-    if (inside_[corner[0]] && inside_[corner[1]] && inside_[corner[2]]) {
-      for (int i = 0; i < 3; ++i)  // what clip_triangle() would return: the triangle unchanged
-        out.indices.push_back(mapped(corner[i], out));
-      return;
+    // What clip_triangle() would conclude, decided from the vertices' classes where it can be.
+    const ClipClass& a = class_[corner[0]];
+    const ClipClass& b = class_[corner[1]];
+    const ClipClass& c = class_[corner[2]];
+    if (a.checked && b.checked && c.checked) {
+      if ((a.outside_frustum & b.outside_frustum & c.outside_frustum) != 0) {
+        ++report.outside;
+        return;
+      }
+      if (a.inside && b.inside && c.inside) {
+        for (int i = 0; i < 3; ++i)
+          out.indices.push_back(mapped(corner[i], out));
+        return;
+      }
     }
     const ClippedPolygon polygon =
         clip_triangle(clip_[corner[0]], clip_[corner[1]], clip_[corner[2]], planes_);
@@ -139,7 +149,7 @@ class VertexStage {
   GuardBandPlanes planes_;
   bool diffuse_;
   std::vector<Vec4> clip_;
-  std::vector<bool> inside_;  // inside_clip_volume() per vertex
+  std::vector<ClipClass> class_;  // classify_clip_vertex() per vertex
   std::vector<std::uint32_t> screen_index_;
 };
 

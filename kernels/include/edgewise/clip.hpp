@@ -80,10 +80,17 @@ struct ClippedPolygon {
 ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
                              const GuardBandPlanes& planes);
 
-// Whether a vertex is finite, within kMaxClipCoordinate, at w > 0 and inside every plane (near,
-// far, guard band and the sides of the view). clip_triangle() returns a triangle whose three
-// vertices pass this test as ClipStatus::inside, bit for bit; callers test each vertex once
-// instead of clipping every triangle.
-bool inside_clip_volume(const Vec4& p, const GuardBandPlanes& planes);
+// What clip_triangle() concludes from one vertex alone, so that callers classify each vertex once
+// instead of clipping every triangle. For a finite vertex within kMaxClipCoordinate (`checked`):
+// `outside_frustum` has a bit per view-frustum plane (near, far, the four sides) the vertex is
+// beyond, and `inside` says it is at w > 0 inside every plane. When all three vertices of a
+// triangle are checked, clip_triangle() returns ClipStatus::outside if their outside_frustum
+// bits share a plane, and the triangle unchanged as ClipStatus::inside if all are inside.
+struct ClipClass {
+  std::uint16_t outside_frustum = 0;
+  bool inside = false;
+  bool checked = false;
+};
+ClipClass classify_clip_vertex(const Vec4& p, const GuardBandPlanes& planes);
 
 }  // namespace edgewise
