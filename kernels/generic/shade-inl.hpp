@@ -97,16 +97,23 @@ class ShadingVisitor {
           colour_columns_[k][h] = Floats(plane_[k].dx) * dx;
       }
     }
+    // Each colour plane's at_vertex + dy_slope * dy for the tile's rows, a batch at a time.
+    alignas(64) float colour_row_bases[kPlanes][kTileSize];
+    if (colour_planes_) {
+      for (std::size_t h = 0; h < kParts; ++h) {
+        const Floats dy =
+            lane_offsets(static_cast<float>(py + static_cast<std::int32_t>(h * kLanes)) + 0.5f) -
+            Floats(depth_.y0);
+        for (int k = 0; k < kPlanes; ++k) {
+          (Floats(plane_[k].at_vertex) + Floats(plane_[k].dy) * dy)
+              .store_aligned(&colour_row_bases[k][h * kLanes]);
+        }
+      }
+    }
     for (int row = 0; row < kTileSize; ++row) {
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
       if (row_mask == 0) continue;
       const Floats row_base(detail::depth_row_base(depth_, py + row));
-      float colour_rows[kPlanes] = {};
-      if (colour_planes_) {
-        const float dy = (static_cast<float>(py + row) + 0.5f) - depth_.y0;
-        for (int k = 0; k < kPlanes; ++k)
-          colour_rows[k] = plane_[k].at_vertex + plane_[k].dy * dy;
-      }
       for (std::size_t h = 0; h < kParts; ++h) {
         const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
         const Floats z = clamp01(row_base + depth_columns[h]);
@@ -118,7 +125,7 @@ class ShadingVisitor {
         passed_ = passed_ - write_lanes;  // all-ones lanes are -1
         const Ints old_color = Ints::load_aligned(reinterpret_cast<std::int32_t*>(color + offset));
         const Ints new_color = colour_planes_
-                                   ? planar_colour(colour_rows, h)
+                                   ? planar_colour(colour_row_bases, row, h)
                                    : shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_,
                                            py + row - origin_y_);
         ((new_color & write_lanes) | (old_color & ~write_lanes))
@@ -160,7 +167,7 @@ class ShadingVisitor {
         xsimd::select((Ints(static_cast<std::int32_t>(bits)) & bit) == bit, Ints(-1), Ints(0));
     return xsimd::bitwise_cast<Floats>(set);
   }
-  Floats passes(Floats z, Floats stored) const {
+  [[gnu::always_inline]] Floats passes(Floats z, Floats stored) const {
     switch (batch_.depth_test) {
       case DepthTest::less:
         return all_ones_where(z < stored);
@@ -208,12 +215,13 @@ class ShadingVisitor {
       plane_[k].dy = area != 0.0 ? static_cast<float>((f2 * x1 - f1 * x2) / area) : 0.0f;
     }
   }
-  Ints planar_colour(const float* rows, std::size_t h) const {
+  [[gnu::always_inline]] Ints planar_colour(const float (*row_bases)[kTileSize], int row,
+                                            std::size_t h) const {
     Floats channel[4];
     for (int k = 0; k < 4; ++k)
-      channel[k] = Floats(rows[k]) + colour_columns_[k][h];
+      channel[k] = Floats(row_bases[k][row]) + colour_columns_[k][h];
     if (perspective_) {
-      const Floats w = Floats(1.0f) / (Floats(rows[4]) + colour_columns_[4][h]);
+      const Floats w = Floats(1.0f) / (Floats(row_bases[4][row]) + colour_columns_[4][h]);
       for (int k = 0; k < 4; ++k)
         channel[k] = channel[k] * w;
     }
@@ -221,7 +229,7 @@ class ShadingVisitor {
   }
 
   // Packed RGBA8 of kLanes pixels from (column, row) relative to the interpolation origin.
-  Ints shade(std::int32_t column, std::int32_t row) const {
+  [[gnu::always_inline]] Ints shade(std::int32_t column, std::int32_t row) const {
     if (batch_.shading == Shading::flat) return Ints(static_cast<std::int32_t>(flat_color_));
     WeightRow<Arch> w = interpolator_.row(column, row);
     if (perspective_) w = divide_.apply(w);
