@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include <xsimd/xsimd.hpp>
 
@@ -67,6 +68,10 @@ class ShadingVisitor {
     perspective_ = batch_.perspective == Perspective::correct &&
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
     if (batch_.shading == Shading::flat) flat_color_ = detail_pack(color_[0]);
+    keep_bounds_ = batch_.tile_max_depth != nullptr && batch_.depth_write;
+    reject_hidden_ =
+        batch_.tile_max_depth != nullptr && batch_.hierarchical_depth &&
+        (batch_.depth_test == DepthTest::less || batch_.depth_test == DepthTest::less_equal);
     colour_planes_ =
         Method == InterpolationMethod::plane_equations && batch_.shading == Shading::gouraud;
     if (colour_planes_) {
@@ -78,13 +83,19 @@ class ShadingVisitor {
   }
 
   void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
-    const std::size_t base =
-        (static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(batch_.tiles_x) + tile_x) * 64;
+    const std::size_t tile_index =
+        static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(batch_.tiles_x) + tile_x;
+    const std::size_t base = tile_index * 64;
     float* depth = batch_.depth_tiles + base;
     std::uint32_t* color = batch_.color_tiles + base;
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
     const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
     fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
+    if (reject_hidden_ && hidden(batch_.tile_max_depth[tile_index], px, py)) {
+      ++tiles_skipped_;
+      return;
+    }
+    Floats stored_max(-std::numeric_limits<float>::infinity());  // depth after the writes
     // The dx term of the depth formula for the tile's columns (exact dx, one rounding each).
     Floats depth_columns[kParts];
     for (std::size_t h = 0; h < kParts; ++h) {
@@ -112,7 +123,16 @@ class ShadingVisitor {
     }
     for (int row = 0; row < kTileSize; ++row) {
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-      if (row_mask == 0) continue;
+      if (row_mask == 0) {
+        if (keep_bounds_) {  // the bound covers every value of the tile
+          for (std::size_t h = 0; h < kParts; ++h) {
+            stored_max = xsimd::max(
+                stored_max, Floats::load_aligned(depth + static_cast<std::size_t>(row) * kTileSize +
+                                                 h * kLanes));
+          }
+        }
+        continue;
+      }
       const Floats row_base(detail::depth_row_base(depth_, py + row));
       for (std::size_t h = 0; h < kParts; ++h) {
         const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
@@ -120,7 +140,11 @@ class ShadingVisitor {
         const Floats stored = Floats::load_aligned(depth + offset);
         const Floats covered = lane_mask(row_mask >> (h * kLanes));
         const Floats write = covered & passes(z, stored);
-        if (batch_.depth_write) ((z & write) | (stored & ~write)).store_aligned(depth + offset);
+        if (batch_.depth_write) {
+          const Floats updated = (z & write) | (stored & ~write);
+          updated.store_aligned(depth + offset);
+          stored_max = xsimd::max(stored_max, updated);
+        }
         const Ints write_lanes = xsimd::bitwise_cast<Ints>(write);
         passed_ = passed_ - write_lanes;  // all-ones lanes are -1
         const Ints old_color = Ints::load_aligned(reinterpret_cast<std::int32_t*>(color + offset));
@@ -132,6 +156,8 @@ class ShadingVisitor {
             .store_aligned(reinterpret_cast<std::int32_t*>(color + offset));
       }
     }
+    // The tile's largest depth, over all 64 values after the writes: its new bound.
+    if (keep_bounds_) batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
   }
 
   void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
@@ -141,6 +167,7 @@ class ShadingVisitor {
   }
 
   void add_counts(detail::ShadeCounts& counts) const {
+    counts.tiles_skipped += tiles_skipped_;
     alignas(64) std::int32_t lanes[kLanes];
     passed_.store_aligned(lanes);
     std::uint64_t passed = 0;
@@ -151,6 +178,39 @@ class ShadingVisitor {
   }
 
  private:
+  static float horizontal_max(Floats v) {
+    alignas(64) float lanes[kLanes];
+    v.store_aligned(lanes);
+    float m = lanes[0];
+    for (std::size_t i = 1; i < kLanes; ++i)
+      m = lanes[i] > m ? lanes[i] : m;
+    return m;
+  }
+
+  // Whether the depth test fails at every sample of the tile at (px, py). The plane's exact
+  // value over the tile's samples is smallest at the corner its slopes point away from. Each
+  // computed depth (depth_plane.hpp: three roundings) lies within 3 u M of the exact plane,
+  // u = 2^-24, M = |z0| + |dzdy| max|dy| + |dzdx| max|dx| over the tile; `corner` (the computed
+  // row base plus the rounded dx term, summed exactly) is within u M of the computed corner
+  // depth. So every computed depth in the tile is at least corner - 7 u M; clamping to [0, 1]
+  // keeps the order. A NaN bound compares false: such a tile is never skipped.
+  bool hidden(float bound, std::int32_t px, std::int32_t py) const {
+    const std::int32_t cx = depth_.dzdx >= 0.0f ? px : px + kTileSize - 1;
+    const std::int32_t cy = depth_.dzdy >= 0.0f ? py : py + kTileSize - 1;
+    const float corner_dx = (static_cast<float>(cx) + 0.5f) - depth_.x0;
+    const double corner =
+        static_cast<double>(detail::depth_row_base(depth_, cy)) + depth_.dzdx * corner_dx;
+    const double reach_x = std::fmax(std::fabs((static_cast<float>(px) + 0.5f) - depth_.x0),
+                                     std::fabs((static_cast<float>(px) + 7.5f) - depth_.x0));
+    const double reach_y = std::fmax(std::fabs((static_cast<float>(py) + 0.5f) - depth_.y0),
+                                     std::fabs((static_cast<float>(py) + 7.5f) - depth_.y0));
+    const double margin = 8.0 * 0x1p-24 *
+                          (std::fabs(depth_.z0) + std::fabs(depth_.dzdy) * reach_y +
+                           std::fabs(depth_.dzdx) * reach_x);
+    const double lowest = std::fmin(std::fmax(corner - margin, 0.0), 1.0);
+    return batch_.depth_test == DepthTest::less ? lowest >= bound : lowest > bound;
+  }
+
   static Floats lane_offsets(float first) {
     alignas(64) static constexpr float kLane[8] = {0, 1, 2, 3, 4, 5, 6, 7};
     return Floats::load_aligned(kLane) + Floats(first);
@@ -275,6 +335,8 @@ class ShadingVisitor {
   Plane plane_[kPlanes]{};
   Floats colour_columns_[kPlanes][kParts];
   std::uint64_t fragments_ = 0;
+  std::uint64_t tiles_skipped_ = 0;
+  bool keep_bounds_ = false, reject_hidden_ = false;
   Ints passed_ = Ints(0);
 };
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -34,11 +35,16 @@ Framebuffer::Framebuffer(std::int32_t width, std::int32_t height) : width_(width
   const std::size_t pixels = static_cast<std::size_t>(tiles_x_) * tiles_y_ * 64;
   color_.assign(pixels, 0);
   depth_.assign(pixels, 1.0f);
+  tile_max_depth_.assign(pixels / 64, 1.0f);
 }
 
 void Framebuffer::clear(const Vec4& color, float depth) {
   std::fill(color_.begin(), color_.end(), pack_rgba8(color));
   std::fill(depth_.begin(), depth_.end(), depth);
+  // NaN depth fails every comparison; +inf as its bound rejects nothing.
+  const float bound = depth == depth ? depth : std::numeric_limits<float>::infinity();
+  std::fill(tile_max_depth_.begin(), tile_max_depth_.end(), bound);
+  depth_bounds_valid_ = true;
 }
 
 void Framebuffer::read_rgba8(std::span<std::uint8_t> rgba) const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "edgewise/clip.hpp"
+#include "framebuffer_access.hpp"
 #include "kernel_table.hpp"
 #include "shade_batch.hpp"
 
@@ -238,9 +239,15 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
       options.depth_write,
       unit(options.light_direction),
       options.ambient,
-      target.color_tiles(),
-      target.depth_tiles(),
-      target.tiles_x()};
+      detail::FramebufferAccess::color(target),
+      detail::FramebufferAccess::depth(target),
+      target.tiles_x(),
+      // The reference neither uses nor keeps the bounds: they are rebuilt after it writes depth.
+      isa == Isa::reference ? nullptr : detail::FramebufferAccess::tile_max_depth(target),
+      options.hierarchical_depth};
+  if (isa == Isa::reference && options.depth_write) {
+    detail::FramebufferAccess::invalidate_depth_bounds(target);
+  }
   RasterReport raster;
   detail::ShadeCounts counts;
   if (!screen.indices.empty()) detail::kernel_table(isa).shade(batch, raster, counts);
@@ -249,6 +256,7 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
   report.errors += raster.errors;
   report.fragments = counts.fragments;
   report.fragments_passed = counts.passed;
+  report.tiles_skipped = counts.tiles_skipped;
   report.vertex_seconds = std::chrono::duration<double>(mapped - start).count();
   report.raster_seconds = std::chrono::duration<double>(Clock::now() - mapped).count();
   return report;

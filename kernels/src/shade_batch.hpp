@@ -25,11 +25,17 @@ struct ShadeBatch {
   std::uint32_t* color_tiles;  // Framebuffer's tiled storage
   float* depth_tiles;
   std::int32_t tiles_x;
+  // Per-tile upper bounds on depth (framebuffer_access.hpp), or null. Kernels given them keep
+  // them valid as they write depth, and with hierarchical_depth skip tiles a less or less_equal
+  // test would fail everywhere.
+  float* tile_max_depth;
+  bool hierarchical_depth;
 };
 
 struct ShadeCounts {
-  std::uint64_t fragments = 0;  // covered samples
-  std::uint64_t passed = 0;     // samples that passed the depth test
+  std::uint64_t fragments = 0;      // covered samples
+  std::uint64_t passed = 0;         // samples that passed the depth test
+  std::uint64_t tiles_skipped = 0;  // tiles rejected whole by their depth bound
 };
 
 }  // namespace edgewise::detail

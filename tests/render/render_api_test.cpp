@@ -165,6 +165,97 @@ TEST_P(RenderApi, FlatShadingTakesTheFirstVertexColour) {
   EXPECT_EQ(flat, report.fragments_passed);
 }
 
+// Quads covering a 32x32 target at the given depths (view z = -depth), drawn in order.
+std::vector<Vec3> stacked_quads(std::initializer_list<float> depths) {
+  std::vector<Vec3> positions;
+  for (float d : depths) {
+    const float z = -d;
+    for (const Vec3& p : {Vec3{0, 0, z}, Vec3{32, 0, z}, Vec3{0, 32, z}, Vec3{32, 0, z},
+                          Vec3{32, 32, z}, Vec3{0, 32, z}}) {
+      positions.push_back(p);
+    }
+  }
+  return positions;
+}
+
+DrawOptions stack_options(Isa isa) {
+  DrawOptions options;
+  options.transform = orthographic(0.0f, 32.0f, 32.0f, 0.0f, 0.0f, 1.0f);
+  options.isa = isa;
+  return options;
+}
+
+struct Frame {
+  std::vector<std::uint8_t> rgba = std::vector<std::uint8_t>(32 * 32 * 4);
+  std::vector<float> depth = std::vector<float>(32 * 32);
+};
+
+Frame read(const Framebuffer& target) {
+  Frame frame;
+  target.read_rgba8(frame.rgba);
+  target.read_depth(frame.depth);
+  return frame;
+}
+
+TEST_P(RenderApi, HiddenTilesAreSkippedWithTheSameResult) {
+  // Front to back: the second and third quads are hidden everywhere. Each quad's two triangles
+  // reach 10 of the 16 tiles each (6 whole, 4 along the diagonal): 40 tile visits to skip.
+  const std::vector<Vec3> positions = stacked_quads({0.2f, 0.5f, 0.8f});
+  std::vector<Vec4> colors;
+  for (int q = 0; q < 3; ++q)
+    colors.insert(colors.end(), 6, Vec4{0.3f * static_cast<float>(q), 0.5f, 1.0f, 1.0f});
+  for (DepthTest test : {DepthTest::less, DepthTest::less_equal}) {
+    DrawOptions options = stack_options(isa());
+    options.depth_test = test;
+    Framebuffer with(32, 32), without(32, 32), reference(32, 32);
+    for (Framebuffer* f : {&with, &without, &reference})
+      f->clear({0, 0, 0, 1}, 1.0f);
+    const DrawReport report = draw(with, {positions, colors, {}, {}}, options);
+    options.hierarchical_depth = false;
+    const DrawReport plain = draw(without, {positions, colors, {}, {}}, options);
+    options.isa = Isa::reference;
+    draw(reference, {positions, colors, {}, {}}, options);
+    if (isa() != Isa::reference) {
+      EXPECT_EQ(report.tiles_skipped, 40u);
+    }
+    EXPECT_EQ(plain.tiles_skipped, 0u);
+    EXPECT_EQ(report.fragments, plain.fragments);
+    EXPECT_EQ(report.fragments_passed, plain.fragments_passed);
+    EXPECT_EQ(read(with).rgba, read(reference).rgba);
+    EXPECT_EQ(read(with).depth, read(reference).depth);
+    EXPECT_EQ(read(without).depth, read(reference).depth);
+  }
+}
+
+TEST_P(RenderApi, DepthBoundsFollowEveryWayDepthChanges) {
+  // Each step changes the stored depth another way; a stale bound would skip the last quad.
+  const std::vector<Vec3> near = stacked_quads({0.2f}), far = stacked_quads({0.6f});
+  for (int way = 0; way < 3; ++way) {
+    Framebuffer fast(32, 32), reference(32, 32);
+    for (Framebuffer* f : {&fast, &reference}) {
+      f->clear({0, 0, 0, 1}, 1.0f);
+      DrawOptions options = stack_options(f == &fast ? isa() : Isa::reference);
+      draw(*f, {near, {}, {}, {}}, options);  // depth 0.2 everywhere
+      if (way == 0) {
+        for (int i = 0; i < 32 * 32; ++i)
+          f->depth_tiles()[i] = 1.0f;  // written directly
+      } else if (way == 1) {
+        options.depth_test = DepthTest::always;  // raised by a draw
+        draw(*f, {stacked_quads({0.9f}), {}, {}, {}}, options);
+      } else {
+        options.depth_test = DepthTest::greater;
+        draw(*f, {stacked_quads({0.7f}), {}, {}, {}}, options);
+      }
+      options.depth_test = DepthTest::less;
+      const std::vector<Vec4> red(6, Vec4{1, 0, 0, 1});
+      const DrawReport report = draw(*f, {far, red, {}, {}}, options);
+      EXPECT_EQ(report.fragments_passed, 32u * 32u) << "way " << way;
+    }
+    EXPECT_EQ(read(fast).rgba, read(reference).rgba) << "way " << way;
+    EXPECT_EQ(read(fast).depth, read(reference).depth) << "way " << way;
+  }
+}
+
 TEST(Framebuffer, TiledLayoutRoundTrips) {
   Framebuffer target(13, 9);
   EXPECT_EQ(target.tiles_x(), 2);

@@ -21,6 +21,10 @@
 
 namespace edgewise {
 
+namespace detail {
+struct FramebufferAccess;
+}
+
 // Storage aligned to 64 bytes, so that every tile row is one aligned SIMD load on every ISA.
 template <class T>
 struct TileAlignedAllocator {
@@ -55,9 +59,14 @@ class Framebuffer {
   void read_rgba8(std::span<std::uint8_t> rgba) const;
   void read_depth(std::span<float> depth) const;
 
-  // The tiled storage (see the layout above), for kernels.
+  // The tiled storage (see the layout above). Depth may be written through depth_tiles(): the
+  // per-tile depth bounds that draw() keeps for hierarchical depth rejection are then rebuilt
+  // from the depth values at the next draw().
   std::uint32_t* color_tiles() { return color_.data(); }
-  float* depth_tiles() { return depth_.data(); }
+  float* depth_tiles() {
+    depth_bounds_valid_ = false;
+    return depth_.data();
+  }
   const std::uint32_t* color_tiles() const { return color_.data(); }
   const float* depth_tiles() const { return depth_.data(); }
 
@@ -70,8 +79,12 @@ class Framebuffer {
 
  private:
   std::int32_t width_, height_, tiles_x_, tiles_y_;
+  friend struct detail::FramebufferAccess;
   std::vector<std::uint32_t, TileAlignedAllocator<std::uint32_t>> color_;
   std::vector<float, TileAlignedAllocator<float>> depth_;
+  // For each tile, an upper bound on its depth values (when depth_bounds_valid_).
+  std::vector<float> tile_max_depth_;
+  bool depth_bounds_valid_ = true;
 };
 
 // Linear [0, 1] colour to the packed RGBA8 value: each component clamped, scaled by 255 and

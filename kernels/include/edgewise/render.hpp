@@ -57,6 +57,9 @@ struct DrawOptions {
   Perspective perspective = Perspective::correct;
   Vec3 light_direction{0.0f, 0.0f, 1.0f};  // towards the light, in the normals' space
   float ambient = 0.15f;
+  // Skip 8x8 tiles whose stored depth the triangle cannot pass anywhere (less and less_equal
+  // tests), from a per-tile depth bound the framebuffer keeps. Outcomes are the same either way.
+  bool hierarchical_depth = true;
   std::optional<PixelRect> scissor;  // intersected with the framebuffer
   std::optional<Isa> isa;            // default: active_isa()
 };
@@ -71,6 +74,7 @@ struct DrawReport {
   std::uint64_t rasterized = 0;        // screen triangles handed to the rasterizer
   std::uint64_t fragments = 0;         // covered samples
   std::uint64_t fragments_passed = 0;  // of those, passing the depth test (and so written)
+  std::uint64_t tiles_skipped = 0;     // covered tiles rejected whole by hierarchical depth
   double vertex_seconds = 0.0;         // transform, clipping and screen mapping
   double raster_seconds = 0.0;         // setup, coverage, depth and shading
   Isa isa = Isa::reference;

@@ -1,0 +1,37 @@
+// The Framebuffer's storage as the kernels see it, and its per-tile depth bounds: an upper bound
+// on every depth value of each tile, so that a tile a triangle cannot pass the depth test in is
+// skipped whole (hierarchical depth rejection).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "edgewise/framebuffer.hpp"
+
+namespace edgewise::detail {
+
+struct FramebufferAccess {
+  static std::uint32_t* color(Framebuffer& f) { return f.color_.data(); }
+  static float* depth(Framebuffer& f) { return f.depth_.data(); }
+
+  // The bounds, rebuilt from the depth values when something wrote depth around draw().
+  static float* tile_max_depth(Framebuffer& f) {
+    if (!f.depth_bounds_valid_) {
+      for (std::size_t tile = 0; tile < f.tile_max_depth_.size(); ++tile) {
+        float bound = -std::numeric_limits<float>::infinity();
+        for (std::size_t i = 0; i < 64; ++i) {
+          const float z = f.depth_[tile * 64 + i];
+          // NaN compares false against everything: +inf keeps the bound from rejecting.
+          bound = std::isnan(z) ? std::numeric_limits<float>::infinity() : std::max(bound, z);
+        }
+        f.tile_max_depth_[tile] = bound;
+      }
+      f.depth_bounds_valid_ = true;
+    }
+    return f.tile_max_depth_.data();
+  }
+  static void invalidate_depth_bounds(Framebuffer& f) { f.depth_bounds_valid_ = false; }
+};
+
+}  // namespace edgewise::detail
