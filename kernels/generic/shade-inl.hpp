@@ -65,8 +65,13 @@ class ShadingVisitor {
     // Model no more than the scene needs: equal w (orthographic views, or a triangle facing the
     // camera) makes perspective-correct weights equal the affine ones; flat shading needs no
     // weights, and Gouraud colour by plane equations interpolates the colours directly.
-    perspective_ = batch_.perspective == Perspective::correct &&
+    // w outside [kMinClipW, kMaxClipW] (or NaN) makes the triangle affine, as in the reference.
+    bool usable_w = true;
+    for (double w : screen.w)
+      usable_w = usable_w && w >= kMinClipW && w <= kMaxClipW;
+    perspective_ = batch_.perspective == Perspective::correct && usable_w &&
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
+    if (batch_.normals != nullptr) scale_normals();
     if (batch_.shading == Shading::flat) flat_color_ = detail_pack(color_[0]);
     keep_bounds_ = batch_.tile_max_depth != nullptr && batch_.depth_write;
     reject_hidden_ =
@@ -178,6 +183,24 @@ class ShadingVisitor {
   }
 
  private:
+  // Scales the three normals by one power of two (exact, and n / |n| is unchanged) so that the
+  // largest component is near 1: float32 squared lengths then neither overflow (components
+  // above ~1.8e19) nor underflow (below ~1e-19).
+  void scale_normals() {
+    float largest = 0.0f;
+    for (const Vec3& n : normal_) {
+      for (float c : {n.x, n.y, n.z})
+        largest = std::fmax(largest, std::fabs(c));
+    }
+    if (!(largest > 0.0f) || !std::isfinite(largest)) return;
+    const float scale = std::ldexp(1.0f, -std::ilogb(largest));
+    for (Vec3& n : normal_) {
+      n.x *= scale;
+      n.y *= scale;
+      n.z *= scale;
+    }
+  }
+
   static float horizontal_max(Floats v) {
     alignas(64) float lanes[kLanes];
     v.store_aligned(lanes);
