@@ -1,6 +1,6 @@
 // draw(): every ISA against the scalar reference. Depth-test outcomes and depth values must be
 // identical (the shared depth formula); colours must lie within a bound derived from the
-// interpolation error bounds (tests/interpolation/error_bounds.hpp); report counts must match.
+// interpolation error bounds (tests/render/colour_bounds.hpp); report counts must match.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,15 +12,14 @@
 
 #include "edgewise/camera.hpp"
 #include "edgewise/render.hpp"
-#include "interpolation/error_bounds.hpp"
 #include "isa_params.hpp"
 #include "random.hpp"
+#include "render/colour_bounds.hpp"
 
 namespace edgewise::test {
 namespace {
 
 constexpr float kFov = 1.0f, kNear = 0.5f, kFar = 40.0f;
-constexpr double kFloatUnit = 0x1.0p-24;
 
 struct Scene {
   std::vector<Vec3> positions;
@@ -111,76 +110,13 @@ ScreenTriangle screen_triangle(const Scene& scene, std::size_t t, const DrawOpti
   return s;
 }
 
-// Bounds on the distance of the fast and of the reference weights from the exact ones.
-struct WeightErrors {
-  double value[3];
-  double error[3];
-};
-WeightErrors weight_errors(InterpolationMethod method, Perspective perspective,
-                           const ScreenTriangle& t, double px, double py) {
-  // The fast kernel sets its interpolators up at the pixel corner below the first vertex.
-  const double origin_x = std::floor(t.x[0]), origin_y = std::floor(t.y[0]);
-  BoundedWeights fast =
-      screen_weight_bounds(method, Evaluator::float32, t, origin_x, origin_y, px, py);
-  BoundedWeights ref = screen_weight_bounds(method, Evaluator::reference, t, 0, 0, px, py);
-  if (method == InterpolationMethod::inverse_distance) {
-    for (Bounded& b : ref.b)
-      b.error = reference_inverse_distance_error(b.value);
-  }
-  const bool equal_w = t.w[0] == t.w[1] && t.w[1] == t.w[2];
-  if (perspective == Perspective::correct) {
-    // With equal w the fast path keeps the screen weights, which equal the exact
-    // perspective-correct ones.
-    if (!equal_w) fast = perspective_bounds(Evaluator::float32, fast, t);
-    ref = perspective_bounds(Evaluator::reference, ref, t);
-  }
-  WeightErrors e;
+VertexAttributes attributes_of(const Scene& scene, std::size_t t) {
+  VertexAttributes a;
   for (int i = 0; i < 3; ++i) {
-    e.value[i] = ref.b[i].value;
-    e.error[i] = fast.b[i].error + ref.b[i].error;
+    a.colors[i] = scene.colors[3 * t + i];
+    a.normals[i] = scene.normals[3 * t + i];
   }
-  return e;
-}
-
-// The largest difference, in 8-bit codes, between the fast and the reference colour of a pixel:
-// a colour channel sum(b_i c_i) is off by at most sum(e_i |c_i|) from the weight errors plus
-// 6 float roundings of its terms (three products, two sums, one margin); diffuse adds the
-// error of max(0, n.l / |n|), at most |e_n| / (|n| - |e_n|) + 12 roundings (n's components,
-// the dot products, sqrt, the division), times (1 - ambient). Codes then differ by the value
-// difference times 255, rounded up, plus one for the rounding of each side.
-int allowed_codes(const Scene& scene, std::size_t t, const WeightErrors& e, Shading shading,
-                  float ambient) {
-  double color_error = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    double err = 0.0, magnitude = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      const float c = (&scene.colors[3 * t + i].x)[k];
-      err += e.error[i] * std::abs(c);
-      magnitude += std::abs(e.value[i] * c) + e.error[i] * std::abs(c);
-    }
-    color_error = std::max(color_error, err + 6.0 * kFloatUnit * magnitude);
-  }
-  if (shading == Shading::diffuse) {
-    double normal_error_sq = 0.0, n[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k) {
-      double err = 0.0, magnitude = 0.0;
-      for (int i = 0; i < 3; ++i) {
-        const float c = (&scene.normals[3 * t + i].x)[k];
-        err += e.error[i] * std::abs(c);
-        magnitude += std::abs(e.value[i] * c) + e.error[i] * std::abs(c);
-        n[k] += e.value[i] * c;
-      }
-      err += 6.0 * kFloatUnit * magnitude;
-      normal_error_sq += err * err;
-    }
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const double normal_error = std::sqrt(normal_error_sq);
-    const double lambert_error = length > 2.0 * normal_error
-                                     ? normal_error / (length - normal_error) + 12.0 * kFloatUnit
-                                     : 1.0;
-    color_error = color_error + (1.0 - ambient) * lambert_error + 4.0 * kFloatUnit;
-  }
-  return 1 + static_cast<int>(std::ceil(255.0 * color_error));
+  return a;
 }
 
 using Render = IsaTest;
@@ -244,8 +180,14 @@ TEST_P(Render, ColoursWithinTheDerivedBound) {
             for (std::int32_t x = 0; x < width; ++x) {
               const std::size_t p = static_cast<std::size_t>(y) * width + x;
               if (expected.depth[p] == 1.0f && actual.depth[p] == 1.0f) continue;  // not drawn
-              const WeightErrors e = weight_errors(method, perspective, tri, x + 0.5, y + 0.5);
-              const int allowed = allowed_codes(one, 0, e, shading, options.ambient);
+              const bool planes = method == InterpolationMethod::plane_equations &&
+                                  shading == Shading::gouraud;  // the colour-plane path
+              const int allowed =
+                  planes ? plane_colour_codes(tri, attributes_of(one, 0), perspective, x + 0.5,
+                                              y + 0.5)
+                         : allowed_codes(attributes_of(one, 0),
+                                         weight_errors(method, perspective, tri, x + 0.5, y + 0.5),
+                                         shading, options.ambient);
               widest = std::max(widest, allowed);
               for (int k = 0; k < 4; ++k) {
                 const int difference = std::abs(actual.rgba[4 * p + k] - expected.rgba[4 * p + k]);
