@@ -197,6 +197,13 @@ void shading(benchmark::State& state, Isa isa, ShadingCase c) {
   draw_scene(state, isa, Camera::orthographic, c, options_for(isa, Camera::orthographic));
 }
 
+// The same workload without hierarchical depth: what skipping hidden tiles is worth.
+void shading_without_tile_depth(benchmark::State& state, Isa isa, ShadingCase c) {
+  DrawOptions options = options_for(isa, Camera::orthographic);
+  options.hierarchical_depth = false;
+  draw_scene(state, isa, Camera::orthographic, c, options);
+}
+
 void shading_method(benchmark::State& state, Isa isa, ShadingCase c, InterpolationMethod method,
                     Perspective perspective) {
   DrawOptions options = options_for(isa, Camera::perspective);
@@ -226,6 +233,14 @@ void register_shading_benchmarks() {
     for (const ShadingCase& c : kCases) {
       const std::string name = joined({"Shading", isa_name(isa), area_label(c)});
       benchmark::RegisterBenchmark(name.c_str(), shading, isa, c)->Unit(benchmark::kMicrosecond);
+    }
+  }
+  for (Isa isa : supported_isas()) {
+    if (isa == Isa::reference) continue;  // the reference never skips tiles
+    for (const ShadingCase& c : kCases) {
+      const std::string name = joined({"ShadingWithoutTileDepth", isa_name(isa), area_label(c)});
+      benchmark::RegisterBenchmark(name.c_str(), shading_without_tile_depth, isa, c)
+          ->Unit(benchmark::kMicrosecond);
     }
   }
   for (Isa isa : supported_isas()) {

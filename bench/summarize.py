@@ -35,6 +35,7 @@ BASELINE_METHOD = ("plane_equations", "correct")
 
 COVERAGE_NAME = re.compile(r"^Coverage/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 SHADING_NAME = re.compile(r"^Shading/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
+PLAIN_DEPTH_NAME = re.compile(r"^ShadingWithoutTileDepth/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 METHOD_NAME = re.compile(r"^ShadingMethod/(?P<isa>[a-z0-9_]+)/(?P<method>[a-z_]+)/"
                          r"(?P<perspective>[a-z]+)/area:(?P<area>\d+)(/min_time:[0-9.]+)?$")
 ISA_ORDER = ["reference", "sse2", "sse4_1", "avx2", "neon"]
@@ -167,11 +168,11 @@ def target_text(area):
     return f"{si(rate, '')} {counter}/s"
 
 
-def print_shading(shading):
+def print_shading(shading, plain_depth):
     print("Shaded drawing (draw(): orthographic, depth less + write, Gouraud), 1920x1080 "
           "RGBA8 + float32 depth, one thread")
     header = ["area px", "ISA", "triangles/s", "fragments/s", "written/s", "cv", "vertex stage",
-              "vs reference", "target (AVX2)", "vs target"]
+              "no tile depth", "vs reference", "target (AVX2)", "vs target"]
     rows = []
     isas = sorted({isa for _, isa in shading}, key=isa_key)
     for area in sorted({a for a, _ in shading}):
@@ -181,13 +182,15 @@ def print_shading(shading):
             if entry is None:
                 continue
             if "error" in entry:
-                rows.append([str(area), isa, "ERROR: " + entry["error"]] + [""] * 7)
+                rows.append([str(area), isa, "ERROR: " + entry["error"]] + [""] * 8)
                 continue
             counter, rate = SHADING_TARGET.get(area, (None, 0))
+            plain = plain_depth.get((area, isa), {})
             rows.append([
                 str(area), isa, si(entry["triangles"], "/s"), si(entry["fragments"], "/s"),
                 si(entry["written"], "/s"), cv_cell(entry),
                 f"{100 * entry['vertex_share']:.1f}%" if "vertex_share" in entry else "-",
+                si(plain["fragments"], "/s") if "fragments" in plain else "-",
                 ratio(entry["triangles"], reference["triangles"])
                 if "triangles" in reference else "-",
                 target_text(area) if counter else "-",
@@ -197,7 +200,8 @@ def print_shading(shading):
 
     print()
     print("fragments: covered samples; written: fragments that passed the depth test; vertex "
-          "stage: share of draw()'s time spent transforming, clipping and mapping vertices")
+          "stage: share of draw()'s time spent transforming, clipping and mapping vertices; "
+          "no tile depth: fragments/s with hierarchical depth off (hidden tiles not skipped)")
     print(f"the reference draws the first 1/{REFERENCE_SHARE} of each set (its rates are per "
           "triangle and per fragment, so they compare; its overdraw is lower)")
     for area in sorted(SHADING_TARGET):
@@ -264,6 +268,7 @@ def main(argv):
 
     coverage = collect(results, COVERAGE_NAME, lambda m: (int(m["area"]), m["isa"]))
     shading = collect(results, SHADING_NAME, lambda m: (int(m["area"]), m["isa"]))
+    plain_depth = collect(results, PLAIN_DEPTH_NAME, lambda m: (int(m["area"]), m["isa"]))
     methods = collect(results, METHOD_NAME,
                       lambda m: (int(m["area"]), m["method"], m["perspective"], m["isa"]))
     clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
@@ -273,7 +278,7 @@ def main(argv):
         return 1
 
     for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
-                                       (print_shading, shading, (shading,)),
+                                       (print_shading, shading, (shading, plain_depth)),
                                        (print_methods, methods, (methods,))):
         if found:
             print()

@@ -196,6 +196,7 @@ void print_counts(const DrawReport& report) {
   print_count("rasterized", report.rasterized);
   print_count("fragments", report.fragments);
   print_count("fragments passed", report.fragments_passed);
+  print_count("tiles skipped", report.tiles_skipped, "hidden by the per-tile depth bound");
 }
 
 // ---- The two modes ----------------------------------------------------------------------------
