@@ -87,6 +87,20 @@ struct RelativeVertices {
   }
 };
 
+// Squared distances from each lane's pixel center in (column, row) to the three vertices.
+template <class Arch>
+inline void squared_distances(const RelativeVertices& vertices, std::int32_t column,
+                              std::int32_t row, xsimd::batch<float, Arch> squared[3]) {
+  using Floats = xsimd::batch<float, Arch>;
+  const Floats x = lane_centers<Arch>(column);
+  const float y = row_center(row);
+  for (int i = 0; i < 3; ++i) {
+    const Floats dx = x - Floats(vertices.x[i]);
+    const Floats dy(y - vertices.y[i]);
+    squared[i] = dx * dx + dy * dy;
+  }
+}
+
 }  // namespace interpolation_detail
 
 template <class Arch, InterpolationMethod Method>
@@ -104,14 +118,8 @@ class ScreenInterpolator<Arch, InterpolationMethod::nearest_vertex> {
 
   WeightRow<Arch> row(std::int32_t column, std::int32_t row) const {
     if (!usable_) return interpolation_detail::centroid_row<Arch>();
-    const Floats x = interpolation_detail::lane_centers<Arch>(column);
-    const float y = interpolation_detail::row_center(row);
     Floats squared[3];
-    for (int i = 0; i < 3; ++i) {
-      const Floats dx = x - Floats(vertices_.x[i]);
-      const Floats dy(y - vertices_.y[i]);
-      squared[i] = dx * dx + dy * dy;
-    }
+    interpolation_detail::squared_distances<Arch>(vertices_, column, row, squared);
     const auto pick0 = (squared[0] <= squared[1]) & (squared[0] <= squared[2]);
     const auto pick1 = ~pick0 & (squared[1] <= squared[2]);
     const auto pick2 = ~pick0 & ~pick1;
@@ -141,14 +149,10 @@ class ScreenInterpolator<Arch, InterpolationMethod::inverse_distance> {
 
   WeightRow<Arch> row(std::int32_t column, std::int32_t row) const {
     if (!usable_) return interpolation_detail::centroid_row<Arch>();
-    const Floats x = interpolation_detail::lane_centers<Arch>(column);
-    const float y = interpolation_detail::row_center(row);
     Floats distance[3];
-    for (int i = 0; i < 3; ++i) {
-      const Floats dx = x - Floats(vertices_.x[i]);
-      const Floats dy(y - vertices_.y[i]);
-      distance[i] = xsimd::sqrt(dx * dx + dy * dy);
-    }
+    interpolation_detail::squared_distances<Arch>(vertices_, column, row, distance);
+    for (Floats& d : distance)
+      d = xsimd::sqrt(d);
     const Floats products[3] = {distance[1] * distance[2], distance[0] * distance[2],
                                 distance[0] * distance[1]};
     const Floats sum = products[0] + products[1] + products[2];
