@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "edgewise/raster.hpp"
@@ -62,6 +63,26 @@ TEST(IsaDispatch, NamesRoundTrip) {
   EXPECT_EQ(parse_isa("sse4.1"), std::nullopt);
   EXPECT_EQ(parse_isa(""), std::nullopt);
   EXPECT_EQ(parse_isa("avx512"), std::nullopt);
+}
+
+TEST(IsaDispatch, ParseSupportedIsaExplainsWhatIsAvailable) {
+  for (Isa isa : supported_isas())
+    EXPECT_EQ(parse_supported_isa(isa_name(isa)), isa);
+  try {
+    parse_supported_isa("avx9");
+    FAIL() << "an unknown name was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(
+        std::string(error.what()).rfind("unknown ISA 'avx9'; this machine supports reference", 0),
+        0u)
+        << error.what();
+  }
+  for (Isa isa : compiled_isas()) {
+    if (!isa_supported(isa)) {
+      EXPECT_THROW(parse_supported_isa(isa_name(isa)), std::invalid_argument);
+    }
+  }
+  EXPECT_THROW(parse_supported_isa("neon_or_not"), std::invalid_argument);
 }
 
 TEST(IsaDispatch, DefaultIsTheBestIsaWithoutTheEnvironmentVariable) {

@@ -42,15 +42,6 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::string supported_isa_list() {
-  std::string list;
-  for (Isa isa : supported_isas()) {
-    if (!list.empty()) list += ", ";
-    list += isa_name(isa);
-  }
-  return list;
-}
-
 std::int32_t parse_dimension(std::string_view text, std::string_view what) {
   std::int32_t value = -1;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -63,16 +54,11 @@ std::int32_t parse_dimension(std::string_view text, std::string_view what) {
 }
 
 Isa parse_isa_option(std::string_view name) {
-  const std::optional<Isa> isa = parse_isa(name);
-  if (!isa) {
-    throw InputError("unknown ISA '" + std::string(name) + "'; this machine supports " +
-                     supported_isa_list());
+  try {
+    return parse_supported_isa(name);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(error.what());
   }
-  if (!isa_supported(*isa)) {
-    throw InputError("ISA " + std::string(name) +
-                     " is not supported on this machine; it supports " + supported_isa_list());
-  }
-  return *isa;
 }
 
 // A float as written, or nullopt. NaN and infinity are accepted: they are valid input that the

@@ -142,4 +142,22 @@ ScopedIsa::~ScopedIsa() {
   force_isa(previous_);
 }
 
+Isa parse_supported_isa(std::string_view name) {
+  std::string supported;
+  for (Isa isa : supported_isas()) {
+    if (!supported.empty()) supported += ", ";
+    supported += isa_name(isa);
+  }
+  const std::optional<Isa> isa = parse_isa(name);
+  if (!isa) {
+    throw std::invalid_argument("unknown ISA '" + std::string(name) + "'; this machine supports " +
+                                supported);
+  }
+  if (!isa_supported(*isa)) {
+    throw std::invalid_argument("ISA " + std::string(name) +
+                                " is not supported on this machine; it supports " + supported);
+  }
+  return *isa;
+}
+
 }  // namespace edgewise

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 
@@ -108,26 +109,12 @@ void parse_size(std::string_view text, RenderSettings& settings) {
   }
 }
 
-std::string supported_isa_list() {
-  std::string list;
-  for (Isa isa : supported_isas()) {
-    if (!list.empty()) list += ", ";
-    list += isa_name(isa);
-  }
-  return list;
-}
-
 Isa parse_isa_option(std::string_view name) {
-  const std::optional<Isa> isa = parse_isa(name);
-  if (!isa) {
-    throw UsageError("unknown ISA " + quoted(name) + "; this machine supports " +
-                     supported_isa_list());
+  try {
+    return parse_supported_isa(name);
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(error.what());
   }
-  if (!isa_supported(*isa)) {
-    throw UsageError("ISA " + std::string(name) +
-                     " is not supported on this machine; it supports " + supported_isa_list());
-  }
-  return *isa;
 }
 
 // `parse` is one of the library's name parsers; `names` lists the accepted values.

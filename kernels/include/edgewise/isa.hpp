@@ -23,6 +23,9 @@ std::span<const Isa> compiled_isas();
 bool isa_supported(Isa isa);
 std::vector<Isa> supported_isas();
 Isa best_isa();
+// The ISA `name` names, when this CPU supports it; otherwise throws std::invalid_argument with a
+// message for people ("unknown ISA 'x'; this machine supports reference, sse2, ...").
+Isa parse_supported_isa(std::string_view name);
 
 // The ISA that entry points use when their options do not name one. Throws
 // std::invalid_argument if EDGEWISE_ISA names an unknown or unsupported ISA.
