@@ -11,6 +11,7 @@
 #include "shade-inl.hpp"
 #include "span_walk-inl.hpp"
 #include "tile_walk-inl.hpp"
+#include "vertex_transform-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
@@ -169,7 +170,8 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
 }
 
 const detail::KernelTable& kernel_table() {
-  static const detail::KernelTable table{EDGEWISE_ISA_ENUM, &rasterize, &count_coverage, &shade};
+  static const detail::KernelTable table{EDGEWISE_ISA_ENUM, &rasterize, &count_coverage, &shade,
+                                         &transform_vertices<Arch>};
   return table;
 }
 

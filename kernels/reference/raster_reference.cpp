@@ -163,6 +163,11 @@ void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterRep
   if (!tiles.empty()) sink.consume(tiles);
 }
 
+void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = transform(m, in[i]);
+}
+
 void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
                     std::uint64_t& pixels) {
   run_batch(batch, report, [&](std::uint32_t, std::uint32_t, std::uint32_t, std::uint64_t mask) {
@@ -175,7 +180,7 @@ void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
 
 const detail::KernelTable& kernel_table() {
   static const detail::KernelTable table{Isa::reference, &rasterize, &count_coverage,
-                                         &reference::shade};
+                                         &reference::shade, &transform_vertices};
   return table;
 }
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "edgewise/camera.hpp"
 #include "edgewise/raster.hpp"
 
 namespace edgewise::detail {
@@ -27,6 +28,8 @@ struct KernelTable {
   void (*rasterize)(const TriangleBatch& batch, CoverageSink& sink, RasterReport& report);
   void (*count_coverage)(const TriangleBatch& batch, RasterReport& report, std::uint64_t& pixels);
   void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
+  // out[i] = transform(m, in[i]) (camera.hpp), bit for bit.
+  void (*transform_vertices)(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);
 };
 
 const KernelTable& kernel_table(Isa isa);

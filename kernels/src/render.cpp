@@ -53,17 +53,18 @@ Vec3 blend(const Vec3& a, const Vec3& b, const Vec3& c, float b0, float b1, floa
 
 class VertexStage {
  public:
-  VertexStage(const DrawMesh& mesh, const DrawOptions& options, const Viewport& viewport)
+  VertexStage(const DrawMesh& mesh, const DrawOptions& options, const Viewport& viewport,
+              const detail::KernelTable& kernels)
       : mesh_(mesh),
         viewport_(viewport),
         planes_(guard_band_planes(viewport)),
         diffuse_(options.shading == Shading::diffuse) {
-    clip_.reserve(mesh.positions.size());
+    clip_.resize(mesh.positions.size());
+    kernels.transform_vertices(options.transform, mesh.positions.data(), mesh.positions.size(),
+                               clip_.data());
     class_.reserve(mesh.positions.size());
-    for (const Vec3& p : mesh.positions) {
-      clip_.push_back(transform(options.transform, p));
-      class_.push_back(classify_clip_vertex(clip_.back(), planes_));
-    }
+    for (const Vec4& p : clip_)
+      class_.push_back(classify_clip_vertex(p, planes_));
     screen_index_.assign(mesh.positions.size(), kUnmapped);
   }
 
@@ -207,7 +208,8 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
   screen.colors.reserve(mesh.positions.size());
   if (options.shading == Shading::diffuse) screen.normals.reserve(mesh.positions.size());
   screen.indices.reserve(3 * report.triangles);
-  VertexStage stage(mesh, options, Viewport{target.width(), target.height()});
+  const detail::KernelTable& kernels = detail::kernel_table(isa);
+  VertexStage stage(mesh, options, Viewport{target.width(), target.height()}, kernels);
   for (std::size_t t = 0; t < report.triangles; ++t) {
     std::uint32_t corner[3];
     bool in_range = true;
@@ -250,7 +252,7 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
   }
   RasterReport raster;
   detail::ShadeCounts counts;
-  if (!screen.indices.empty()) detail::kernel_table(isa).shade(batch, raster, counts);
+  if (!screen.indices.empty()) kernels.shade(batch, raster, counts);
   report.rasterized = raster.triangles;
   report.culled += raster.culled;
   report.errors += raster.errors;
