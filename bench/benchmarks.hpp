@@ -3,6 +3,9 @@
 
 namespace edgewise::bench {
 
+// The target every benchmark draws into (full HD).
+inline constexpr int kWidth = 1920, kHeight = 1080;
+
 // Coverage/<isa>/area:<px> for every supported ISA, the reference included.
 void register_coverage_benchmarks();
 

@@ -5,9 +5,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "benchmarks.hpp"
+
 namespace {
 
-constexpr int kWidth = 1920, kHeight = 1080;
+using edgewise::bench::kHeight;
+using edgewise::bench::kWidth;
 
 void clear_rgba8_depth32f(benchmark::State& state) {
   constexpr std::size_t kPixels = std::size_t{kWidth} * kHeight;

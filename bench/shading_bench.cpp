@@ -30,7 +30,6 @@
 namespace edgewise::bench {
 namespace {
 
-constexpr int kWidth = 1920, kHeight = 1080;
 constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0003;
 
 struct ShadingCase {

@@ -45,10 +45,9 @@ inline WeightRow<Arch> centroid_row() {
 template <class Arch>
 inline xsimd::batch<float, Arch> lane_columns(std::int32_t column, float offset) {
   using Floats = xsimd::batch<float, Arch>;
-  alignas(64) float lanes[Floats::size];
-  for (std::size_t i = 0; i < Floats::size; ++i)
-    lanes[i] = static_cast<float>(i);
-  return Floats::load_unaligned(lanes) + Floats(static_cast<float>(column) + offset);
+  alignas(64) static constexpr float kLane[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  static_assert(Floats::size <= 8);
+  return Floats::load_aligned(kLane) + Floats(static_cast<float>(column) + offset);
 }
 
 // Pixel-center x of each lane relative to the origin: column + lane + 0.5.
@@ -87,19 +86,31 @@ struct RelativeVertices {
   }
 };
 
-// Squared distances from each lane's pixel center in (column, row) to the three vertices.
+// The methods that work from distances to the vertices: the vertices relative to the origin,
+// and the squared distances from each lane's pixel center in (column, row) to them. Unusable
+// (non-finite) triangles get the centroid weights.
 template <class Arch>
-inline void squared_distances(const RelativeVertices& vertices, std::int32_t column,
-                              std::int32_t row, xsimd::batch<float, Arch> squared[3]) {
+class VertexDistances {
+ public:
   using Floats = xsimd::batch<float, Arch>;
-  const Floats x = lane_centers<Arch>(column);
-  const float y = row_center(row);
-  for (int i = 0; i < 3; ++i) {
-    const Floats dx = x - Floats(vertices.x[i]);
-    const Floats dy(y - vertices.y[i]);
-    squared[i] = dx * dx + dy * dy;
+  VertexDistances(const ScreenTriangle& t, double origin_x, double origin_y)
+      : usable_(finite_triangle(t)) {
+    if (usable_) vertices_ = {t, origin_x, origin_y};
   }
-}
+
+ protected:
+  void squared_distances(std::int32_t column, std::int32_t row, Floats squared[3]) const {
+    const Floats x = lane_centers<Arch>(column);
+    const float y = row_center(row);
+    for (int i = 0; i < 3; ++i) {
+      const Floats dx = x - Floats(vertices_.x[i]);
+      const Floats dy(y - vertices_.y[i]);
+      squared[i] = dx * dx + dy * dy;
+    }
+  }
+  bool usable_;
+  RelativeVertices vertices_;
+};
 
 }  // namespace interpolation_detail
 
@@ -108,18 +119,16 @@ class ScreenInterpolator;
 
 // One-hot on the closest vertex, ties to the lowest index (squared distances compared).
 template <class Arch>
-class ScreenInterpolator<Arch, InterpolationMethod::nearest_vertex> {
+class ScreenInterpolator<Arch, InterpolationMethod::nearest_vertex>
+    : interpolation_detail::VertexDistances<Arch> {
  public:
   using Floats = xsimd::batch<float, Arch>;
-  ScreenInterpolator(const ScreenTriangle& t, double origin_x, double origin_y)
-      : usable_(interpolation_detail::finite_triangle(t)) {
-    if (usable_) vertices_ = {t, origin_x, origin_y};
-  }
+  using interpolation_detail::VertexDistances<Arch>::VertexDistances;
 
   WeightRow<Arch> row(std::int32_t column, std::int32_t row) const {
-    if (!usable_) return interpolation_detail::centroid_row<Arch>();
+    if (!this->usable_) return interpolation_detail::centroid_row<Arch>();
     Floats squared[3];
-    interpolation_detail::squared_distances<Arch>(vertices_, column, row, squared);
+    this->squared_distances(column, row, squared);
     const auto pick0 = (squared[0] <= squared[1]) & (squared[0] <= squared[2]);
     const auto pick1 = ~pick0 & (squared[1] <= squared[2]);
     const auto pick2 = ~pick0 & ~pick1;
@@ -127,10 +136,6 @@ class ScreenInterpolator<Arch, InterpolationMethod::nearest_vertex> {
     return {{xsimd::select(pick0, one, zero), xsimd::select(pick1, one, zero),
              xsimd::select(pick2, one, zero)}};
   }
-
- private:
-  bool usable_;
-  interpolation_detail::RelativeVertices vertices_;
 };
 
 // Weights 1/d_i normalized, written as b_i = d_j d_k / (d1 d2 + d0 d2 + d0 d1) (numerator and
@@ -138,19 +143,17 @@ class ScreenInterpolator<Arch, InterpolationMethod::nearest_vertex> {
 // gets that vertex's one-hot weights without a branch. Only when two coincident vertices share
 // the sample is the denominator 0; the lowest such vertex then takes the weight.
 template <class Arch>
-class ScreenInterpolator<Arch, InterpolationMethod::inverse_distance> {
+class ScreenInterpolator<Arch, InterpolationMethod::inverse_distance>
+    : interpolation_detail::VertexDistances<Arch> {
  public:
   using Floats = xsimd::batch<float, Arch>;
   static_assert(kInverseDistancePower == 1);
-  ScreenInterpolator(const ScreenTriangle& t, double origin_x, double origin_y)
-      : usable_(interpolation_detail::finite_triangle(t)) {
-    if (usable_) vertices_ = {t, origin_x, origin_y};
-  }
+  using interpolation_detail::VertexDistances<Arch>::VertexDistances;
 
   WeightRow<Arch> row(std::int32_t column, std::int32_t row) const {
-    if (!usable_) return interpolation_detail::centroid_row<Arch>();
+    if (!this->usable_) return interpolation_detail::centroid_row<Arch>();
     Floats distance[3];
-    interpolation_detail::squared_distances<Arch>(vertices_, column, row, distance);
+    this->squared_distances(column, row, distance);
     for (Floats& d : distance)
       d = xsimd::sqrt(d);
     const Floats products[3] = {distance[1] * distance[2], distance[0] * distance[2],
@@ -170,10 +173,6 @@ class ScreenInterpolator<Arch, InterpolationMethod::inverse_distance> {
     }
     return result;
   }
-
- private:
-  bool usable_;
-  interpolation_detail::RelativeVertices vertices_;
 };
 
 // The course's cross products: b0 = cross(v1 - p, v2 - p) / A, b1 = cross(v2 - p, v0 - p) / A,

@@ -80,13 +80,8 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
         } else {
           walk_tiles<Arch, std::int64_t>(setup, visitor);
         }
-      } else if (is_error(status)) {
-        if (report.errors++ == 0) {
-          report.first_error_triangle = t;
-          report.first_error = status;
-        }
       } else {
-        ++report.culled;
+        detail::count_not_drawn(report, t, status);
       }
     }
   }

@@ -37,10 +37,7 @@ class ShadingVisitor {
         interpolator_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, 0.0, 0.0),
         divide_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}) {}
 
-  std::uint32_t triangle = 0;
-
   void begin_triangle(std::uint32_t t) {
-    triangle = t;
     std::size_t corner[3] = {3 * std::size_t{t}, 3 * std::size_t{t} + 1, 3 * std::size_t{t} + 2};
     if (batch_.coverage.indices != nullptr) {
       for (int i = 0; i < 3; ++i)
@@ -72,7 +69,7 @@ class ShadingVisitor {
     perspective_ = batch_.perspective == Perspective::correct && usable_w &&
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
     if (batch_.normals != nullptr) scale_normals();
-    if (batch_.shading == Shading::flat) flat_color_ = detail_pack(color_[0]);
+    if (batch_.shading == Shading::flat) flat_color_ = pack_rgba8(color_[0]);
     keep_bounds_ = batch_.tile_max_depth != nullptr && batch_.depth_write;
     reject_hidden_ =
         batch_.tile_max_depth != nullptr && batch_.hierarchical_depth &&
@@ -105,7 +102,7 @@ class ShadingVisitor {
     Floats depth_columns[kParts];
     for (std::size_t h = 0; h < kParts; ++h) {
       const Floats dx =
-          (lane_offsets(static_cast<float>(px + static_cast<std::int32_t>(h * kLanes)) + 0.5f)) -
+          interpolation_detail::lane_centers<Arch>(px + static_cast<std::int32_t>(h * kLanes)) -
           Floats(depth_.x0);
       depth_columns[h] = Floats(depth_.dzdx) * dx;
       if (colour_planes_) {
@@ -118,7 +115,7 @@ class ShadingVisitor {
     if (colour_planes_) {
       for (std::size_t h = 0; h < kParts; ++h) {
         const Floats dy =
-            lane_offsets(static_cast<float>(py + static_cast<std::int32_t>(h * kLanes)) + 0.5f) -
+            interpolation_detail::lane_centers<Arch>(py + static_cast<std::int32_t>(h * kLanes)) -
             Floats(depth_.y0);
         for (int k = 0; k < kPlanes; ++k) {
           (Floats(plane_[k].at_vertex) + Floats(plane_[k].dy) * dy)
@@ -234,10 +231,6 @@ class ShadingVisitor {
     return batch_.depth_test == DepthTest::less ? lowest >= bound : lowest > bound;
   }
 
-  static Floats lane_offsets(float first) {
-    alignas(64) static constexpr float kLane[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-    return Floats::load_aligned(kLane) + Floats(first);
-  }
   static Floats clamp01(Floats z) { return xsimd::min(xsimd::max(z, Floats(0.0f)), Floats(1.0f)); }
   static Floats all_ones_where(xsimd::batch_bool<float, Arch> condition) {
     return xsimd::select(condition, xsimd::bitwise_cast<Floats>(Ints(-1)), Floats(0.0f));
@@ -265,8 +258,6 @@ class ShadingVisitor {
     }
     return Floats(0.0f);
   }
-
-  static std::uint32_t detail_pack(const Vec4& c) { return edgewise::pack_rgba8(c); }
 
   // Gouraud colour by its own plane equations (model no more than the scene needs: one add per
   // channel and pixel instead of weights, then colours). Each channel, scaled to 0 .. 255, is

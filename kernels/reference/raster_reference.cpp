@@ -126,13 +126,8 @@ void for_each_drawn_triangle(
     if (status == TriangleStatus::drawn) {
       ++report.drawn;
       triangle(t, snapped);
-    } else if (is_error(status)) {
-      if (report.errors++ == 0) {
-        report.first_error_triangle = t;
-        report.first_error = status;
-      }
     } else {
-      ++report.culled;
+      detail::count_not_drawn(report, t, status);
     }
   }
 }

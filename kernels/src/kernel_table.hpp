@@ -34,6 +34,19 @@ struct KernelTable {
 
 const KernelTable& kernel_table(Isa isa);
 
+// Counts a triangle that was not drawn into the report: errors (remembering the first one) or
+// culled. Shared by every ISA and the reference, so their reports agree by construction.
+inline void count_not_drawn(RasterReport& report, std::size_t triangle, TriangleStatus status) {
+  if (is_error(status)) {
+    if (report.errors++ == 0) {
+      report.first_error_triangle = triangle;
+      report.first_error = status;
+    }
+  } else {
+    ++report.culled;
+  }
+}
+
 }  // namespace edgewise::detail
 
 // One table per compiled ISA, each defined in its own translation unit.
