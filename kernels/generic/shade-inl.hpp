@@ -220,17 +220,21 @@ class ShadingVisitor {
     const float corner_dx = (static_cast<float>(cx) + 0.5f) - depth_.x0;
     const double corner =
         static_cast<double>(detail::depth_row_base(depth_, cy)) + depth_.dzdx * corner_dx;
-    const double reach_x = std::fmax(std::fabs((static_cast<float>(px) + 0.5f) - depth_.x0),
-                                     std::fabs((static_cast<float>(px) + 7.5f) - depth_.x0));
-    const double reach_y = std::fmax(std::fabs((static_cast<float>(py) + 0.5f) - depth_.y0),
-                                     std::fabs((static_cast<float>(py) + 7.5f) - depth_.y0));
+    // Plain comparisons rather than std::fmax/fmin, which compile to library calls; they give
+    // the same values here (the reaches are finite, and a NaN corner becomes 0 either way).
+    const double reach_x = larger(std::fabs((static_cast<float>(px) + 0.5f) - depth_.x0),
+                                  std::fabs((static_cast<float>(px) + 7.5f) - depth_.x0));
+    const double reach_y = larger(std::fabs((static_cast<float>(py) + 0.5f) - depth_.y0),
+                                  std::fabs((static_cast<float>(py) + 7.5f) - depth_.y0));
     const double margin = 8.0 * 0x1p-24 *
                           (std::fabs(depth_.z0) + std::fabs(depth_.dzdy) * reach_y +
                            std::fabs(depth_.dzdx) * reach_x);
-    const double lowest = std::fmin(std::fmax(corner - margin, 0.0), 1.0);
+    const double above_zero = corner - margin > 0.0 ? corner - margin : 0.0;
+    const double lowest = above_zero < 1.0 ? above_zero : 1.0;
     return batch_.depth_test == DepthTest::less ? lowest >= bound : lowest > bound;
   }
 
+  static double larger(double a, double b) { return a > b ? a : b; }
   static Floats clamp01(Floats z) { return xsimd::min(xsimd::max(z, Floats(0.0f)), Floats(1.0f)); }
   static Floats all_ones_where(xsimd::batch_bool<float, Arch> condition) {
     return xsimd::select(condition, xsimd::bitwise_cast<Floats>(Ints(-1)), Floats(0.0f));
