@@ -13,4 +13,8 @@ void register_coverage_benchmarks();
 // ShadingMethod/<isa>/<method>/<perspective>/area:<px>, for every supported ISA and the reference.
 void register_shading_benchmarks();
 
+// Sample/<isa>/<filter>/<stream> for every supported ISA and the reference, and
+// SamplePeer/oiio/<mode>/<stream> (OpenImageIO's TextureSystem) when it is built in.
+void register_sample_benchmarks();
+
 }  // namespace edgewise::bench

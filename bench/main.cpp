@@ -9,6 +9,9 @@
 int main(int argc, char** argv) {
   edgewise::bench::register_coverage_benchmarks();
   edgewise::bench::register_shading_benchmarks();
+#if defined(EDGEWISE_BENCH_SAMPLING)
+  edgewise::bench::register_sample_benchmarks();
+#endif
 
   std::string supported;
   for (edgewise::Isa isa : edgewise::supported_isas()) {

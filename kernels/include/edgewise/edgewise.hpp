@@ -8,4 +8,6 @@
 #include "edgewise/isa.hpp"
 #include "edgewise/raster.hpp"
 #include "edgewise/render.hpp"
+#include "edgewise/sampler.hpp"
+#include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"

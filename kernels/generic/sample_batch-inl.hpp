@@ -1,0 +1,149 @@
+// The sampling entry point for one ISA: queries in batches of lanes (records transposed to one
+// batch per field), the filter, the defined results for bad input, results transposed back.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include "../src/sample_kernels.hpp"
+#include "interleave-inl.hpp"
+#include "texture_filters-inl.hpp"
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+
+namespace sample_detail {
+
+using Arch = EDGEWISE_ARCH;
+using Floats = xsimd::batch<float, Arch>;
+using Ints = xsimd::batch<std::int32_t, Arch>;
+constexpr std::size_t kLanes = Floats::size;
+
+// 0, 1, 2, ... per lane.
+[[gnu::always_inline]] inline Ints lane_index() {
+  alignas(64) static constexpr std::int32_t kIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  return Ints::load_aligned(kIndex);
+}
+
+// Queries [first, first + count) as batches; lanes past the end repeat the last query.
+[[gnu::always_inline]] inline QueryLanes<Arch> load_queries(const TextureQuery* queries,
+                                                            std::size_t count) {
+  static_assert(sizeof(TextureQuery) == 6 * sizeof(float));
+  const float* fields = &queries[0].s;
+  if (count == kLanes) {  // a whole batch: one strided gather per field
+    const Ints stride = Ints(6) * lane_index();
+    return {gather_float<Arch>(fields + 0, stride), gather_float<Arch>(fields + 1, stride),
+            gather_float<Arch>(fields + 2, stride), gather_float<Arch>(fields + 3, stride),
+            gather_float<Arch>(fields + 4, stride), gather_float<Arch>(fields + 5, stride)};
+  }
+  alignas(64) float lanes[6][kLanes];
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    const TextureQuery& q = queries[l < count ? l : count - 1];
+    const float values[6] = {q.s, q.t, q.dsdx, q.dtdx, q.dsdy, q.dtdy};
+    for (int f = 0; f < 6; ++f)
+      lanes[f][l] = values[f];
+  }
+  return {Floats::load_aligned(lanes[0]), Floats::load_aligned(lanes[1]),
+          Floats::load_aligned(lanes[2]), Floats::load_aligned(lanes[3]),
+          Floats::load_aligned(lanes[4]), Floats::load_aligned(lanes[5])};
+}
+
+[[gnu::always_inline]] inline void store_results(const Rgba<Arch>& rgba, std::size_t count,
+                                                 Vec4* out) {
+  static_assert(sizeof(Vec4) == 4 * sizeof(float));
+  if (count == kLanes) {
+    store_interleaved<Arch>(rgba.c, &out[0].x);
+    return;
+  }
+  alignas(64) float channels[4][kLanes];
+  for (int k = 0; k < 4; ++k)
+    rgba.c[k].store_aligned(channels[k]);
+  for (std::size_t l = 0; l < count; ++l)
+    out[l] = {channels[0][l], channels[1][l], channels[2][l], channels[3][l]};
+}
+
+// Every query through `filter` (one loop per filter, the filter inlined), with the defined
+// results for bad input: lanes with a non-finite position or (when the filter reads them) a
+// non-finite derivative are computed from harmless values, so every index stays in range, and
+// then replaced by (0, 0, 0, 0) or the coarsest texel.
+template <bool kReadsDerivatives, class Filter>
+[[gnu::always_inline]] inline void sample_all(const detail::TextureDescription& texture,
+                                              const TextureQuery* queries, std::size_t count,
+                                              Vec4* out, Filter filter) {
+  const detail::LevelTable& mips = texture.mips;
+  const Rgba<Arch> coarsest = fetch_texels<Arch>(texture, Ints(mips.start[mips.count - 1]));
+  const Floats largest(std::numeric_limits<float>::max());
+  Floats scale[4];
+  for (int k = 0; k < 4; ++k)
+    scale[k] = Floats(texture.channel_scale[k]);
+  for (std::size_t first = 0; first < count; first += kLanes) {
+    const std::size_t n = count - first < kLanes ? count - first : kLanes;
+    QueryLanes<Arch> q = load_queries(queries + first, n);
+    const auto position_ok = (xsimd::abs(q.s) <= largest) & (xsimd::abs(q.t) <= largest);
+    q.s = xsimd::select(position_ok, q.s, Floats(0.0f));
+    q.t = xsimd::select(position_ok, q.t, Floats(0.0f));
+    auto derivatives_ok = position_ok;
+    if constexpr (kReadsDerivatives) {
+      Floats* fields[4] = {&q.dsdx, &q.dtdx, &q.dsdy, &q.dtdy};
+      for (Floats* d : fields)
+        derivatives_ok = derivatives_ok & (xsimd::abs(*d) <= largest);
+      for (Floats* d : fields)
+        *d = xsimd::select(derivatives_ok, *d, Floats(0.0f));
+    }
+    Rgba<Arch> rgba = filter(q);
+    for (int k = 0; k < 4; ++k) {
+      if constexpr (kReadsDerivatives) {
+        rgba.c[k] = xsimd::select(derivatives_ok, rgba.c[k], coarsest.c[k]);
+      }
+      rgba.c[k] = xsimd::select(position_ok, rgba.c[k] * scale[k], Floats(0.0f));
+    }
+    store_results(rgba, n, out + first);
+  }
+}
+
+}  // namespace sample_detail
+
+void sample(const detail::TextureDescription& texture, const SamplerOptions& options,
+            const TextureQuery* queries, std::size_t count, Vec4* out) {
+  using namespace sample_detail;
+  const TextureFilters<Arch> f(texture, options);
+  using Q = QueryLanes<Arch>;
+  switch (options.filter) {
+    case TextureFilter::nearest:
+      return sample_all<false>(texture, queries, count, out,
+                               [&](const Q& q) { return f.nearest(q.s, q.t); });
+    case TextureFilter::bilinear:
+      return sample_all<false>(texture, queries, count, out,
+                               [&](const Q& q) { return f.bilinear0(q.s, q.t); });
+    case TextureFilter::bicubic_catmull_rom:
+      return sample_all<false>(texture, queries, count, out,
+                               [&](const Q& q) { return f.bicubic(q.s, q.t, true); });
+    case TextureFilter::bicubic_bspline:
+      return sample_all<false>(texture, queries, count, out,
+                               [&](const Q& q) { return f.bicubic(q.s, q.t, false); });
+    case TextureFilter::mip_nearest:
+      return sample_all<true>(texture, queries, count, out, [&](const Q& q) {
+        return f.mip_nearest(q.s, q.t, f.level_of_detail(q));
+      });
+    case TextureFilter::trilinear:
+      return sample_all<true>(texture, queries, count, out, [&](const Q& q) {
+        return f.trilinear(q.s, q.t, f.level_of_detail(q));
+      });
+    case TextureFilter::supersample:
+      return sample_all<true>(texture, queries, count, out,
+                              [&](const Q& q) { return f.supersample(q); });
+    case TextureFilter::ripmap:
+      return sample_all<true>(texture, queries, count, out,
+                              [&](const Q& q) { return f.ripmap(q); });
+    case TextureFilter::anisotropic:
+      return sample_all<true>(texture, queries, count, out,
+                              [&](const Q& q) { return f.anisotropic(q); });
+    case TextureFilter::ewa:
+      return sample_all<true>(texture, queries, count, out, [&](const Q& q) { return f.ewa(q); });
+    case TextureFilter::summed_area:
+      break;  // no vectorized kernel: sampler.cpp runs the reference
+  }
+}
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -1,0 +1,202 @@
+// Texel addressing and fetching for a batch of queries: coordinates reduced by the wrap mode,
+// integer texel indices wrapped per lane, texels gathered and decoded to linear float RGBA.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <type_traits>
+
+#include <xsimd/xsimd.hpp>
+
+#include "../src/sample_kernels.hpp"
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+
+template <class Arch>
+struct Rgba {
+  xsimd::batch<float, Arch> c[4];
+};
+
+// Per-lane level geometry: the level's size and its first texel in the storage.
+template <class Arch>
+struct LevelLanes {
+  xsimd::batch<std::int32_t, Arch> width, height, start;
+  xsimd::batch<float, Arch> widthf, heightf;
+};
+
+// base[index] per lane (AVX2 has a gather instruction; xsimd 8.1 never emits it).
+#define EDGEWISE_INLINE [[gnu::always_inline]] inline
+
+template <class Arch>
+EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> gather_int32(
+    const std::int32_t* base, xsimd::batch<std::int32_t, Arch> index) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    return _mm256_i32gather_epi32(reinterpret_cast<const int*>(base), index, 4);
+  } else
+#endif
+  {
+    return xsimd::batch<std::int32_t, Arch>::gather(base, index);
+  }
+}
+
+template <class Arch>
+EDGEWISE_INLINE xsimd::batch<float, Arch> gather_float(const float* base,
+                                                       xsimd::batch<std::int32_t, Arch> index) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    return _mm256_i32gather_ps(base, index, 4);
+  } else
+#endif
+  {
+    return xsimd::batch<float, Arch>::gather(base, index);
+  }
+}
+
+template <class Arch>
+EDGEWISE_INLINE LevelLanes<Arch> level_lanes(const detail::LevelTable& table,
+                                             xsimd::batch<std::int32_t, Arch> level) {
+  LevelLanes<Arch> lanes;
+  lanes.width = gather_int32<Arch>(table.width, level);
+  lanes.height = gather_int32<Arch>(table.height, level);
+  lanes.start = gather_int32<Arch>(table.start, level);
+  lanes.widthf = xsimd::to_float(lanes.width);
+  lanes.heightf = xsimd::to_float(lanes.height);
+  return lanes;
+}
+
+template <class Arch>
+EDGEWISE_INLINE LevelLanes<Arch> level_lanes(const detail::LevelTable& table, std::int32_t level) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  LevelLanes<Arch> lanes;
+  lanes.width = Ints(table.width[level]);
+  lanes.height = Ints(table.height[level]);
+  lanes.start = Ints(table.start[level]);
+  lanes.widthf = xsimd::to_float(lanes.width);
+  lanes.heightf = xsimd::to_float(lanes.height);
+  return lanes;
+}
+
+// A coordinate brought into one period of the wrap mode, exactly up to one rounding of
+// s - floor(s) (below 2^-24 for s in [-2, 2]): repeat to [0, 1], mirror to [0, 2], clamp to
+// [-1, 2] (beyond, every texel index clamps to the border anyway). Non-finite values become 0
+// (callers zero those lanes' results), so that every index below stays in range.
+template <class Arch>
+EDGEWISE_INLINE xsimd::batch<float, Arch> reduce_coordinate(xsimd::batch<float, Arch> s,
+                                                            WrapMode mode) {
+  using Floats = xsimd::batch<float, Arch>;
+  const auto finite = xsimd::abs(s) <= Floats(std::numeric_limits<float>::max());
+  s = xsimd::select(finite, s, Floats(0.0f));
+  switch (mode) {
+    case WrapMode::repeat:
+      return s - xsimd::floor(s);
+    case WrapMode::mirror:
+      return s - Floats(2.0f) * xsimd::floor(s * Floats(0.5f));
+    case WrapMode::clamp_to_edge:
+      break;
+  }
+  return xsimd::min(xsimd::max(s, Floats(-1.0f)), Floats(2.0f));
+}
+
+// Texel indices wrapped into [0, n). kRounds is how far outside one period the indices may lie:
+// after reduce_coordinate(), a filter reaching one texel beyond its base texel (bilinear) gives
+// indices in [-n, 2n) for repeat and [-2n, 4n) for mirror, one round; two texels (bicubic), two.
+template <class Arch, int kRounds = 2>
+EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> wrap_index(xsimd::batch<std::int32_t, Arch> i,
+                                                            xsimd::batch<std::int32_t, Arch> n,
+                                                            WrapMode mode) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  const Ints zero(0);
+  switch (mode) {
+    case WrapMode::repeat:
+      for (int k = 0; k < kRounds; ++k) {
+        i = xsimd::select(i < zero, i + n, i);
+        i = xsimd::select(i >= n, i - n, i);
+      }
+      return i;
+    case WrapMode::mirror: {
+      const Ints period = n + n;
+      for (int k = 0; k < kRounds; ++k) {
+        i = xsimd::select(i < zero, i + period, i);
+        i = xsimd::select(i >= period, i - period, i);
+      }
+      return xsimd::select(i >= n, period - Ints(1) - i, i);
+    }
+    case WrapMode::clamp_to_edge:
+      break;
+  }
+  return xsimd::min(xsimd::max(i, zero), n - Ints(1));
+}
+
+// Any texel index below 2^24 in magnitude wrapped into [0, n): the quotient by one period comes
+// from a float division (exact but for a rounding that can only land it one period off, which
+// the two corrections undo).
+template <class Arch>
+EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> wrap_any_index(xsimd::batch<std::int32_t, Arch> i,
+                                                                xsimd::batch<std::int32_t, Arch> n,
+                                                                WrapMode mode) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  if (mode == WrapMode::clamp_to_edge) return xsimd::min(xsimd::max(i, Ints(0)), n - Ints(1));
+  const Ints period = mode == WrapMode::mirror ? n + n : n;
+  const Ints quotient =
+      xsimd::to_int(xsimd::floor(xsimd::to_float(i) / xsimd::to_float(period)));
+  Ints r = i - quotient * period;
+  r = xsimd::select(r < Ints(0), r + period, r);
+  r = xsimd::select(r >= period, r - period, r);
+  if (mode == WrapMode::repeat) return r;
+  return xsimd::select(r >= n, period - Ints(1) - r, r);
+}
+
+// RGBA of the texels at storage indices `index` (a level's start + y * width + x), in the
+// texture's stored units: the linear value times 1 / channel_scale (8-bit codes stay 0 .. 255, so
+// filters weight them as they are and one multiply per result, not per texel, brings them to
+// linear; sRGB channels are decoded here).
+template <class Arch>
+EDGEWISE_INLINE Rgba<Arch> fetch_texels(const detail::TextureDescription& texture,
+                                        xsimd::batch<std::int32_t, Arch> index) {
+  using Floats = xsimd::batch<float, Arch>;
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  constexpr std::size_t kLanes = Floats::size;
+  Rgba<Arch> out;
+  if (texture.format == TexelFormat::rgba8) {
+    const Ints packed =
+        gather_int32<Arch>(reinterpret_cast<const std::int32_t*>(texture.texels), index);
+    const Ints byte(0xFF);
+    const Ints codes[4] = {packed & byte, (packed >> 8) & byte, (packed >> 16) & byte,
+                           (packed >> 24) & byte};  // arithmetic shift, masked: the top byte
+    for (int k = 0; k < 4; ++k) {
+      out.c[k] = (k < 3 && texture.srgb_table != nullptr)
+                     ? gather_float<Arch>(texture.srgb_table, codes[k])
+                     : xsimd::to_float(codes[k]);
+    }
+    return out;
+  }
+  // Float texels: 16 bytes each, addressed in 64 bits (4 * index can pass 2^31).
+  alignas(64) std::int32_t lanes[kLanes];
+  index.store_aligned(lanes);
+  alignas(64) float channels[4][kLanes];
+  const float* texels = reinterpret_cast<const float*>(texture.texels);
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    const float* texel = texels + 4 * static_cast<std::size_t>(lanes[l]);
+    for (int k = 0; k < 4; ++k)
+      channels[k][l] = texel[k];
+  }
+  for (int k = 0; k < 4; ++k)
+    out.c[k] = Floats::load_aligned(channels[k]);
+  return out;
+}
+
+template <class Arch>
+EDGEWISE_INLINE Rgba<Arch> fetch(const detail::TextureDescription& texture,
+                                 const LevelLanes<Arch>& level, xsimd::batch<std::int32_t, Arch> x,
+                                 xsimd::batch<std::int32_t, Arch> y) {
+  return fetch_texels<Arch>(texture, level.start + y * level.width + x);
+}
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

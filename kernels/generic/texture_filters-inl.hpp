@@ -1,0 +1,425 @@
+// The texture filters over a batch of queries, as defined in sampler.hpp: the level-0 filters
+// (nearest, bilinear, bicubic), the level of detail, and the filters built from bilinear taps
+// (mip_nearest, trilinear, supersample, ripmap, anisotropic).
+//
+// Accuracy against the double-precision reference (kernels/reference/sample_reference.*), used by
+// the tests' bounds: a texel position u = s' w - 1/2 is off by at most kPositionError w texels
+// (the reduction s' = s - floor(s) rounds by at most 2^-24, then s' w and the subtraction round
+// by at most 2^-24 |u| <= 2^-23 w each: 5 * 2^-24 w < 2^-21 w); weights and sums
+// add a few float ulps of the largest texel magnitude; the level of detail is off by at most
+// kLog2RelativeError (|lambda| + 1).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include <xsimd/xsimd.hpp>
+
+#include "fast_log2-inl.hpp"
+#include "texel_fetch-inl.hpp"
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+
+inline constexpr double kPositionError = 0x1p-21;
+
+template <class Arch>
+struct QueryLanes {
+  xsimd::batch<float, Arch> s, t, dsdx, dtdx, dsdy, dtdy;
+};
+
+template <class Arch>
+EDGEWISE_INLINE Rgba<Arch> zero_rgba() {
+  const xsimd::batch<float, Arch> zero(0.0f);
+  return {{zero, zero, zero, zero}};
+}
+
+template <class Arch>
+EDGEWISE_INLINE Rgba<Arch> weighted_sum(const Rgba<Arch>& a, xsimd::batch<float, Arch> wa,
+                                        const Rgba<Arch>& b, xsimd::batch<float, Arch> wb) {
+  Rgba<Arch> out;
+  for (int k = 0; k < 4; ++k)
+    out.c[k] = a.c[k] * wa + b.c[k] * wb;
+  return out;
+}
+
+template <class Arch>
+EDGEWISE_INLINE void accumulate(Rgba<Arch>& sum, const Rgba<Arch>& value,
+                                xsimd::batch<float, Arch> weight) {
+  for (int k = 0; k < 4; ++k)
+    sum.c[k] = xsimd::fma(value.c[k], weight, sum.c[k]);
+}
+
+template <class Arch>
+class TextureFilters {
+ public:
+  using Floats = xsimd::batch<float, Arch>;
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+
+  TextureFilters(const detail::TextureDescription& texture, const SamplerOptions& options)
+      : texture_(texture), options_(options), level0_(level_lanes<Arch>(texture.mips, 0)) {}
+
+  [[gnu::always_inline]] Rgba<Arch> nearest(Floats s, Floats t) const {
+    const Floats u = reduce_coordinate<Arch>(s, options_.wrap_s) * level0_.widthf;
+    const Floats v = reduce_coordinate<Arch>(t, options_.wrap_t) * level0_.heightf;
+    const Ints x =
+        wrap_index<Arch, 1>(xsimd::to_int(xsimd::floor(u)), level0_.width, options_.wrap_s);
+    const Ints y =
+        wrap_index<Arch, 1>(xsimd::to_int(xsimd::floor(v)), level0_.height, options_.wrap_t);
+    return fetch<Arch>(texture_, level0_, x, y);
+  }
+
+  [[gnu::always_inline]] Rgba<Arch> bilinear(const LevelLanes<Arch>& level, Floats s,
+                                             Floats t) const {
+    const Floats u = reduce_coordinate<Arch>(s, options_.wrap_s) * level.widthf - Floats(0.5f);
+    const Floats v = reduce_coordinate<Arch>(t, options_.wrap_t) * level.heightf - Floats(0.5f);
+    const Floats u0 = xsimd::floor(u), v0 = xsimd::floor(v);
+    const Floats fu = u - u0, fv = v - v0;
+    const Ints x0 = xsimd::to_int(u0), y0 = xsimd::to_int(v0);
+    const Ints xs[2] = {wrap_index<Arch, 1>(x0, level.width, options_.wrap_s),
+                        wrap_index<Arch, 1>(x0 + Ints(1), level.width, options_.wrap_s)};
+    const Ints ys[2] = {wrap_index<Arch, 1>(y0, level.height, options_.wrap_t),
+                        wrap_index<Arch, 1>(y0 + Ints(1), level.height, options_.wrap_t)};
+    const Rgba<Arch> top =
+        weighted_sum<Arch>(fetch<Arch>(texture_, level, xs[0], ys[0]), Floats(1.0f) - fu,
+                           fetch<Arch>(texture_, level, xs[1], ys[0]), fu);
+    const Rgba<Arch> bottom =
+        weighted_sum<Arch>(fetch<Arch>(texture_, level, xs[0], ys[1]), Floats(1.0f) - fu,
+                           fetch<Arch>(texture_, level, xs[1], ys[1]), fu);
+    return weighted_sum<Arch>(top, Floats(1.0f) - fv, bottom, fv);
+  }
+
+  [[gnu::always_inline]] Rgba<Arch> bilinear0(Floats s, Floats t) const {
+    return bilinear(level0_, s, t);
+  }
+
+  // Catmull-Rom or cubic B-spline over 4x4 texels of level 0.
+  Rgba<Arch> bicubic(Floats s, Floats t, bool catmull_rom) const {
+    const Floats u = reduce_coordinate<Arch>(s, options_.wrap_s) * level0_.widthf - Floats(0.5f);
+    const Floats v = reduce_coordinate<Arch>(t, options_.wrap_t) * level0_.heightf - Floats(0.5f);
+    const Floats u1 = xsimd::floor(u), v1 = xsimd::floor(v);
+    Floats wx[4], wy[4];
+    cubic_weights(u - u1, catmull_rom, wx);
+    cubic_weights(v - v1, catmull_rom, wy);
+    const Ints x1 = xsimd::to_int(u1), y1 = xsimd::to_int(v1);
+    Ints xs[4];
+    for (int i = 0; i < 4; ++i)
+      xs[i] = wrap_index<Arch>(x1 + Ints(i - 1), level0_.width, options_.wrap_s);
+    Rgba<Arch> sum = zero_rgba<Arch>();
+    for (int j = 0; j < 4; ++j) {
+      const Ints y = wrap_index<Arch>(y1 + Ints(j - 1), level0_.height, options_.wrap_t);
+      Rgba<Arch> row = zero_rgba<Arch>();
+      for (int i = 0; i < 4; ++i)
+        accumulate<Arch>(row, fetch<Arch>(texture_, level0_, xs[i], y), wx[i]);
+      accumulate<Arch>(sum, row, wy[j]);
+    }
+    return sum;
+  }
+
+  // lambda = log2(rho) + bias (sampler.hpp); +inf where a derivative is not finite.
+  [[gnu::always_inline]] Floats level_of_detail(const QueryLanes<Arch>& q) const {
+    const Floats ux = q.dsdx * Floats(texture_.width), vx = q.dtdx * Floats(texture_.height);
+    const Floats uy = q.dsdy * Floats(texture_.width), vy = q.dtdy * Floats(texture_.height);
+    Floats lambda;
+    if (options_.lod == LodFormula::exact) {
+      // log2 of the squared length, halved: no square root.
+      const Floats rho2 = xsimd::max(ux * ux + vx * vx, uy * uy + vy * vy);
+      lambda = Floats(0.5f) * fast_log2<Arch>(rho2);
+    } else {
+      const Floats rho = xsimd::max(xsimd::max(xsimd::abs(ux), xsimd::abs(vx)),
+                                    xsimd::max(xsimd::abs(uy), xsimd::abs(vy)));
+      lambda = fast_log2<Arch>(rho);
+    }
+    return lambda + Floats(options_.lod_bias);
+  }
+
+  // lambda clamped to [0, levels - 1]; NaN is not expected (level_of_detail() gives +inf).
+  [[gnu::always_inline]] Floats clamp_lambda(Floats lambda) const {
+    return xsimd::min(xsimd::max(lambda, Floats(0.0f)),
+                      Floats(static_cast<float>(texture_.mips.count - 1)));
+  }
+
+  [[gnu::always_inline]] Rgba<Arch> mip_nearest(Floats s, Floats t, Floats lambda) const {
+    const Floats level = xsimd::ceil(clamp_lambda(lambda) - Floats(0.5f));
+    return bilinear(
+        level_lanes<Arch>(texture_.mips, xsimd::to_int(xsimd::max(level, Floats(0.0f)))), s, t);
+  }
+
+  [[gnu::always_inline]] Rgba<Arch> trilinear(Floats s, Floats t, Floats lambda) const {
+    const Floats clamped = clamp_lambda(lambda);
+    const Floats floor_level = xsimd::floor(clamped);
+    const Floats f = clamped - floor_level;
+    const Ints l0 = xsimd::to_int(floor_level);
+    const Rgba<Arch> fine = bilinear(level_lanes<Arch>(texture_.mips, l0), s, t);
+    // Where every lane magnifies or sits at the last level, the second level weighs nothing.
+    if (xsimd::all(f == Floats(0.0f))) return fine;
+    const Ints last(texture_.mips.count - 1);
+    const Ints l1 = xsimd::min(l0 + Ints(1), last);
+    return weighted_sum<Arch>(fine, Floats(1.0f) - f,
+                              bilinear(level_lanes<Arch>(texture_.mips, l1), s, t), f);
+  }
+
+  Rgba<Arch> supersample(const QueryLanes<Arch>& q) const {
+    const int n = options_.supersample_taps;
+    Rgba<Arch> sum = zero_rgba<Arch>();
+    const Floats weight(1.0f / static_cast<float>(n * n));
+    for (int j = 0; j < n; ++j) {
+      const Floats b((static_cast<float>(j) + 0.5f) / static_cast<float>(n) - 0.5f);
+      for (int i = 0; i < n; ++i) {
+        const Floats a((static_cast<float>(i) + 0.5f) / static_cast<float>(n) - 0.5f);
+        const Floats s = q.s + a * q.dsdx + b * q.dsdy;
+        const Floats t = q.t + a * q.dtdx + b * q.dtdy;
+        accumulate<Arch>(sum, bilinear0(s, t), weight);
+      }
+    }
+    return sum;
+  }
+
+  Rgba<Arch> anisotropic(const QueryLanes<Arch>& q) const {
+    const Floats ux = q.dsdx * Floats(texture_.width), vx = q.dtdx * Floats(texture_.height);
+    const Floats uy = q.dsdy * Floats(texture_.width), vy = q.dtdy * Floats(texture_.height);
+    Floats px, py;
+    if (options_.lod == LodFormula::exact) {
+      px = xsimd::sqrt(ux * ux + vx * vx);
+      py = xsimd::sqrt(uy * uy + vy * vy);
+    } else {
+      px = xsimd::max(xsimd::abs(ux), xsimd::abs(vx));
+      py = xsimd::max(xsimd::abs(uy), xsimd::abs(vy));
+    }
+    const Floats longest = xsimd::max(px, py), shortest = xsimd::min(px, py);
+    const Floats limit(static_cast<float>(options_.max_anisotropy));
+    // ceil(Pmax / Pmin) clamped to the limit; Pmin = 0 gives the limit, Pmax = 0 one probe.
+    Floats probes =
+        xsimd::select(shortest * limit > longest, xsimd::ceil(longest / shortest), limit);
+    probes = xsimd::select(longest > Floats(0.0f), probes, Floats(1.0f));
+    const Floats lambda = fast_log2<Arch>(longest / probes) + Floats(options_.lod_bias);
+    const auto x_major = px >= py;
+    const Floats ds = xsimd::select(x_major, q.dsdx, q.dsdy);
+    const Floats dt = xsimd::select(x_major, q.dtdx, q.dtdy);
+    // Lanes run the largest probe count of the batch; probes past a lane's own count weigh 0.
+    alignas(64) float counts[Floats::size];
+    probes.store_aligned(counts);
+    float most = 1.0f;
+    for (float c : counts)
+      most = c > most ? c : most;
+    Rgba<Arch> sum = zero_rgba<Arch>();
+    const Floats inverse = Floats(1.0f) / probes;
+    for (int k = 0; k < static_cast<int>(most); ++k) {
+      const Floats kf(static_cast<float>(k));
+      const Floats offset = (kf + Floats(0.5f)) * inverse - Floats(0.5f);
+      const Floats weight = xsimd::select(kf < probes, inverse, Floats(0.0f));
+      accumulate<Arch>(sum, trilinear(q.s + offset * ds, q.t + offset * dt, lambda), weight);
+    }
+    return sum;
+  }
+
+  Rgba<Arch> ripmap(const QueryLanes<Arch>& q) const {
+    const Floats ux = q.dsdx * Floats(texture_.width), vx = q.dtdx * Floats(texture_.height);
+    const Floats uy = q.dsdy * Floats(texture_.width), vy = q.dtdy * Floats(texture_.height);
+    const Floats bias(options_.lod_bias);
+    const Floats ls = fast_log2<Arch>(xsimd::max(xsimd::abs(ux), xsimd::abs(uy))) + bias;
+    const Floats lt = fast_log2<Arch>(xsimd::max(xsimd::abs(vx), xsimd::abs(vy))) + bias;
+    const Floats cs = xsimd::min(xsimd::max(ls, Floats(0.0f)),
+                                 Floats(static_cast<float>(texture_.rip_columns - 1)));
+    const Floats ct =
+        xsimd::min(xsimd::max(lt, Floats(0.0f)), Floats(static_cast<float>(texture_.rip_rows - 1)));
+    const Floats i0f = xsimd::floor(cs), j0f = xsimd::floor(ct);
+    const Floats fs = cs - i0f, ft = ct - j0f;
+    const Ints i0 = xsimd::to_int(i0f), j0 = xsimd::to_int(j0f);
+    const Ints i1 = xsimd::min(i0 + Ints(1), Ints(texture_.rip_columns - 1));
+    const Ints j1 = xsimd::min(j0 + Ints(1), Ints(texture_.rip_rows - 1));
+    const Ints columns(texture_.rip_columns);
+    const auto rip = [&](Ints i, Ints j) {
+      return bilinear(level_lanes<Arch>(texture_.rips, j * columns + i), q.s, q.t);
+    };
+    const Rgba<Arch> top = weighted_sum<Arch>(rip(i0, j0), Floats(1.0f) - fs, rip(i1, j0), fs);
+    const Rgba<Arch> bottom = weighted_sum<Arch>(rip(i0, j1), Floats(1.0f) - fs, rip(i1, j1), fs);
+    return weighted_sum<Arch>(top, Floats(1.0f) - ft, bottom, ft);
+  }
+
+  // Elliptical weighted average (sampler.hpp, ewa; kernels/reference/sample_reference.cpp).
+  Rgba<Arch> ewa(const QueryLanes<Arch>& q) const {
+    const Floats ux = q.dsdx * Floats(texture_.width), vx = q.dtdx * Floats(texture_.height);
+    const Floats uy = q.dsdy * Floats(texture_.width), vy = q.dtdy * Floats(texture_.height);
+    const Floats a2 = ux * ux + vx * vx, b2 = uy * uy + vy * vy;
+    const auto a_major = a2 >= b2;
+    Axes axes{xsimd::select(a_major, ux, uy), xsimd::select(a_major, vx, vy),
+              xsimd::select(a_major, uy, ux), xsimd::select(a_major, vy, vx)};
+    const Floats major2 = xsimd::max(a2, b2), minor2 = xsimd::min(a2, b2);
+    // Eccentricity clamp: a minor axis shorter than major / M becomes major's perpendicular / M.
+    const Floats limit(static_cast<float>(options_.max_anisotropy));
+    const auto too_thin = minor2 * limit * limit < major2;
+    axes.nu = xsimd::select(too_thin, -axes.mv / limit, axes.nu);
+    axes.nv = xsimd::select(too_thin, axes.mu / limit, axes.nv);
+    const Floats minor_length2 = axes.nu * axes.nu + axes.nv * axes.nv;
+    const Floats lambda = Floats(0.5f) * fast_log2<Arch>(minor_length2) + Floats(options_.lod_bias);
+    const Floats clamped = clamp_lambda(lambda);
+    Floats level = xsimd::floor(clamped);
+    Floats f = clamped - level;
+    // Bound the work: a level up, unblended, while the ellipse's box holds over 2^22 texels.
+    const Floats last(static_cast<float>(texture_.mips.count - 1));
+    for (std::int32_t k = 0; k < texture_.mips.count; ++k) {
+      const LevelLanes<Arch> lanes = level_lanes<Arch>(texture_.mips, xsimd::to_int(level));
+      const Floats eu = xsimd::sqrt(scaled_u2(axes, lanes) + Floats(1.0f));
+      const Floats ev = xsimd::sqrt(scaled_v2(axes, lanes) + Floats(1.0f));
+      const auto up = (level < last) & ((Floats(2.0f) * eu + Floats(1.0f)) *
+                                            (Floats(2.0f) * ev + Floats(1.0f)) >
+                                        Floats(0x1p22f));
+      if (!xsimd::any(up)) break;
+      level = xsimd::select(up, level + Floats(1.0f), level);
+      f = xsimd::select(up, Floats(0.0f), f);
+    }
+    // Lanes answered otherwise (no footprint, or the last level) take a unit disk in the loops
+    // below, so that their sizes (huge or not finite) never set the batch's loop counts.
+    const auto no_footprint = major2 == Floats(0.0f);
+    const auto at_last = level >= last;
+    const auto elsewhere = no_footprint | at_last;
+    for (Floats* axis : {&axes.mu, &axes.mv, &axes.nu, &axes.nv})
+      *axis = xsimd::select(elsewhere, Floats(0.0f), *axis);
+    const Ints l0 = xsimd::to_int(level);
+    Rgba<Arch> result = ewa_level(axes, level_lanes<Arch>(texture_.mips, l0), q.s, q.t);
+    if (xsimd::any(f > Floats(0.0f))) {
+      const Ints l1 = xsimd::min(l0 + Ints(1), Ints(texture_.mips.count - 1));
+      result = weighted_sum<Arch>(result, Floats(1.0f) - f,
+                                  ewa_level(axes, level_lanes<Arch>(texture_.mips, l1), q.s, q.t),
+                                  f);
+    }
+    // No footprint magnifies; the last level is its single texel.
+    const Rgba<Arch> magnified = bilinear0(q.s, q.t);
+    const Rgba<Arch> coarsest =
+        fetch_texels<Arch>(texture_, Ints(texture_.mips.start[texture_.mips.count - 1]));
+    for (int k = 0; k < 4; ++k) {
+      result.c[k] = xsimd::select(at_last, coarsest.c[k], result.c[k]);
+      result.c[k] = xsimd::select(no_footprint, magnified.c[k], result.c[k]);
+    }
+    return result;
+  }
+
+ private:
+  // The EWA footprint's axes in level-0 texels: major (mu, mv) and minor (nu, nv).
+  struct Axes {
+    Floats mu, mv, nu, nv;
+  };
+  // Squared half extents of the ellipse's box in a level, less the reconstruction disk's 1.
+  Floats scaled_u2(const Axes& a, const LevelLanes<Arch>& lanes) const {
+    const Floats scale = lanes.widthf / Floats(texture_.width);
+    const Floats mu = a.mu * scale, nu = a.nu * scale;
+    return mu * mu + nu * nu;
+  }
+  Floats scaled_v2(const Axes& a, const LevelLanes<Arch>& lanes) const {
+    const Floats scale = lanes.heightf / Floats(texture_.height);
+    const Floats mv = a.mv * scale, nv = a.nv * scale;
+    return mv * mv + nv * nv;
+  }
+
+  // The Gaussian-weighted average over the ellipse in one level (per-lane level), row by row:
+  // each row visits only the texels between the ellipse's two crossings of it (widened by one
+  // texel, the Q < 1 test decides), lanes running to the widest row of the batch.
+  Rgba<Arch> ewa_level(const Axes& axes, const LevelLanes<Arch>& level, Floats s, Floats t) const {
+    const Floats su = level.widthf / Floats(texture_.width);
+    const Floats sv = level.heightf / Floats(texture_.height);
+    const Floats au = axes.mu * su, av = axes.mv * sv, bu = axes.nu * su, bv = axes.nv * sv;
+    // Heckbert's conic with the unit disk added; F by Lagrange's identity (no cancellation).
+    const Floats cross = au * bv - av * bu;
+    const Floats A0 = av * av + bv * bv + Floats(1.0f);
+    const Floats C0 = au * au + bu * bu + Floats(1.0f);
+    const Floats F = cross * cross + A0 + C0 - Floats(1.0f);
+    const Floats A = A0 / F, B = Floats(-2.0f) * (au * av + bu * bv) / F, C = C0 / F;
+    const Floats eu = xsimd::sqrt(C0), ev = xsimd::sqrt(A0);  // the box's half extents
+    const Floats cu = centre(s, level.widthf, eu, options_.wrap_s);
+    const Floats cv = centre(t, level.heightf, ev, options_.wrap_t);
+    const Floats row_first = xsimd::ceil(cv - ev);
+    const Floats rows = xsimd::floor(cv + ev) - row_first + Floats(1.0f);
+    const auto most_rows = static_cast<std::int32_t>(largest_lane(rows));
+    Rgba<Arch> sum = zero_rgba<Arch>();
+    Floats weight_sum(0.0f);
+    const Floats table_last(static_cast<float>(detail::kEwaWeights - 2));
+    for (std::int32_t r = 0; r < most_rows; ++r) {
+      const Floats row(static_cast<float>(r));
+      const Floats y = row_first + row;
+      const Floats dv = y - cv;
+      // A du^2 + (B dv) du + (C dv^2 - 1) < 0 between the roots.
+      const Floats half_b = Floats(0.5f) * B * dv;
+      const Floats disc = half_b * half_b - A * (C * dv * dv - Floats(1.0f));
+      const Floats root = xsimd::sqrt(xsimd::max(disc, Floats(0.0f)));
+      const Floats x_first = xsimd::floor(cu + (-half_b - root) / A);
+      const Floats x_end = xsimd::ceil(cu + (-half_b + root) / A) + Floats(1.0f);
+      const auto row_used = (row < rows) & (disc >= Floats(0.0f));
+      const Floats columns = xsimd::select(row_used, x_end - x_first, Floats(0.0f));
+      const auto most_columns = static_cast<std::int32_t>(largest_lane(columns));
+      const Ints texel_y = wrap_any_index<Arch>(xsimd::to_int(y), level.height, options_.wrap_t);
+      for (std::int32_t c = 0; c < most_columns; ++c) {
+        const Floats column(static_cast<float>(c));
+        const Floats x = x_first + column;
+        const Floats du = x - cu;
+        const Floats Q = (A * du + B * dv) * du + C * dv * dv;
+        const auto inside = (column < columns) & (Q < Floats(1.0f));
+        const Floats position =
+            xsimd::min(xsimd::max(Q, Floats(0.0f)), Floats(1.0f)) * table_last;
+        const Floats bin = xsimd::floor(position);
+        const Ints index = xsimd::to_int(bin);
+        const Floats w0 = gather_float<Arch>(texture_.ewa_weights, index);
+        const Floats w1 = gather_float<Arch>(texture_.ewa_weights, index + Ints(1));
+        const Floats weight =
+            xsimd::select(inside, w0 + (w1 - w0) * (position - bin), Floats(0.0f));
+        const Ints texel_x = wrap_any_index<Arch>(xsimd::to_int(x), level.width, options_.wrap_s);
+        accumulate<Arch>(sum, fetch<Arch>(texture_, level, texel_x, texel_y), weight);
+        weight_sum = weight_sum + weight;
+      }
+    }
+    const Floats inverse = Floats(1.0f) / weight_sum;
+    for (int k = 0; k < 4; ++k)
+      sum.c[k] = sum.c[k] * inverse;
+    return sum;
+  }
+
+  // The ellipse's centre in the level's texels: s w - 1/2, with s moved by whole periods
+  // (repeat, mirror) or, for clamp, by whole texels to at most ceil(half extent + 1) texels
+  // beyond the border: every texel the ellipse reaches there is the border one, as before, and
+  // the texel grid keeps its place under the ellipse.
+  Floats centre(Floats s, Floats size, Floats half_extent, WrapMode mode) const {
+    if (mode == WrapMode::clamp_to_edge) {
+      const Floats x = s * size;  // +-inf for a huge s: moved to the bound below
+      const Floats bound = size + xsimd::ceil(half_extent + Floats(1.0f));
+      // frac(s w) = frac((s - floor(s)) w), w being whole: s w itself may have lost its fraction.
+      const Floats within = (s - xsimd::floor(s)) * size;
+      const Floats fraction = within - xsimd::floor(within);
+      Floats moved = xsimd::select(x > bound, bound + fraction, x);
+      moved = xsimd::select(x < -bound, -bound - Floats(1.0f) + fraction, moved);
+      return moved - Floats(0.5f);
+    }
+    return reduce_coordinate<Arch>(s, mode) * size - Floats(0.5f);
+  }
+
+  static float largest_lane(Floats v) {
+    alignas(64) float lanes[Floats::size];
+    v.store_aligned(lanes);
+    float most = 0.0f;
+    for (float lane : lanes)
+      most = lane > most ? lane : most;
+    return most;
+  }
+
+  static void cubic_weights(Floats f, bool catmull_rom, Floats w[4]) {
+    const Floats f2 = f * f, f3 = f2 * f;
+    if (catmull_rom) {
+      w[0] = Floats(0.5f) * (Floats(2.0f) * f2 - f3 - f);
+      w[1] = Floats(0.5f) * (Floats(3.0f) * f3 - Floats(5.0f) * f2 + Floats(2.0f));
+      w[2] = Floats(0.5f) * (Floats(4.0f) * f2 + f - Floats(3.0f) * f3);
+      w[3] = Floats(0.5f) * (f3 - f2);
+    } else {
+      const Floats g = Floats(1.0f) - f;
+      const Floats sixth(1.0f / 6.0f);
+      w[0] = g * g * g * sixth;
+      w[1] = (Floats(3.0f) * f3 - Floats(6.0f) * f2 + Floats(4.0f)) * sixth;
+      w[2] = (Floats(3.0f) * (f2 - f3 + f) + Floats(1.0f)) * sixth;
+      w[3] = f3 * sixth;
+    }
+  }
+
+  const detail::TextureDescription& texture_;
+  const SamplerOptions& options_;
+  LevelLanes<Arch> level0_;
+};
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -1,0 +1,114 @@
+// Texture sampling: every filter from magnification to EWA, from texture coordinates and their
+// screen derivatives, 8 queries per step on AVX2 (4 on SSE and NEON).
+//
+// Footprint and level of detail. With W x H the size of level 0, the derivatives in texels are
+//   ux = dsdx W, vx = dtdx H, uy = dsdy W, vy = dtdy H,
+// and the level of detail is lambda = log2(rho) + lod_bias, with
+//   LodFormula::exact:    rho = max(sqrt(ux^2 + vx^2), sqrt(uy^2 + vy^2))
+//   LodFormula::max_axis: rho = max(|ux|, |vx|, |uy|, |vy|)   (cheaper; up to sqrt(2) lower)
+// lambda <= 0 magnifies (level 0); mip filters clamp lambda to [0, levels - 1].
+//
+// The filters (all results linear RGBA, 8-bit textures decoded first):
+//   nearest                the texel containing (s, t) in level 0
+//   bilinear               the 2x2 texels around (s, t) in level 0, weighted by distance
+//   bicubic_catmull_rom    4x4 texels of level 0, Catmull-Rom weights (interpolating)
+//   bicubic_bspline        4x4 texels of level 0, cubic B-spline weights (smoothing, not
+//                          interpolating)
+//   mip_nearest            bilinear in the level nearest lambda (round half down)
+//   trilinear              bilinear in levels floor(lambda) and floor(lambda) + 1, blended by the
+//                          fraction
+//   supersample            N x N bilinear taps of level 0 at the centres of an N x N grid over the
+//                          footprint parallelogram (s, t) + a (dsdx, dtdx) + b (dsdy, dtdy),
+//                          a, b in [-1/2, 1/2]
+//   ripmap                 the rip levels chosen per axis from the footprint's bounding box
+//                          (extents max(|ux|, |uy|) and max(|vx|, |vy|)), bilinear in each, blended
+//                          between neighbouring levels on both axes
+//   summed_area            the exact average of the nearest-neighbour texture over the footprint's
+//                          axis-aligned bounding box (at least one texel on each axis)
+//   anisotropic            GPU-style: N = min(ceil(Pmax / Pmin), max_anisotropy) trilinear probes
+//                          spread evenly along the major axis (P = the two axis lengths), lambda
+//                          from Pmax / N
+//   ewa                    elliptical weighted average (Heckbert): texels inside the footprint
+//                          ellipse (widened by the unit reconstruction disk) weighted by a
+//                          Gaussian table (128 entries generated at start-up, interpolated);
+//                          level from the minor axis after clamping the eccentricity to
+//                          max_anisotropy, blended between two levels; while the ellipse's
+//                          bounding box in the finer level holds over 2^22 texels (only a
+//                          strongly negative lod_bias gets there) a coarser level is used alone
+//
+// Wrap modes apply per axis to every texel fetched. Results for bad input are defined: a query
+// with non-finite s or t gives (0, 0, 0, 0); derivatives that are zero magnify; huge ones select
+// the coarsest level; a non-finite derivative makes every filter that reads derivatives return
+// the coarsest level's single texel (the texture's average). Float textures holding NaN or
+// infinite texels give NaN or infinite results wherever a filter reads them (even at weight 0).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "edgewise/isa.hpp"
+#include "edgewise/texture.hpp"
+#include "edgewise/vector.hpp"
+
+namespace edgewise {
+
+enum class TextureFilter : std::uint8_t {
+  nearest,
+  bilinear,
+  bicubic_catmull_rom,
+  bicubic_bspline,
+  mip_nearest,
+  trilinear,
+  supersample,
+  ripmap,
+  summed_area,
+  anisotropic,
+  ewa,
+};
+
+enum class WrapMode : std::uint8_t {
+  repeat,         // the texture tiles the plane
+  clamp_to_edge,  // coordinates outside [0, 1) take the border texel
+  mirror,         // every other copy is mirrored (period 2)
+};
+
+enum class LodFormula : std::uint8_t { exact, max_axis };
+
+// The ranges of SamplerOptions' integer options.
+inline constexpr int kMaxAnisotropyLimit = 64;
+inline constexpr int kMaxSupersampleTaps = 16;
+
+struct SamplerOptions {
+  TextureFilter filter = TextureFilter::trilinear;
+  WrapMode wrap_s = WrapMode::repeat;
+  WrapMode wrap_t = WrapMode::repeat;
+  LodFormula lod = LodFormula::exact;
+  float lod_bias = 0.0f;
+  int max_anisotropy = 16;   // anisotropic probes, EWA eccentricity; 1 .. kMaxAnisotropyLimit
+  int supersample_taps = 4;  // N of the N x N grid; 1 .. kMaxSupersampleTaps
+};
+
+// One query: the position and its screen derivatives, in texture coordinates (per pixel).
+// The same six floats, in this order, as a record of edgewise-sample's query files.
+struct TextureQuery {
+  float s, t, dsdx, dtdx, dsdy, dtdy;
+};
+
+// out[i] = the filtered linear RGBA at queries[i]. Throws std::invalid_argument when the spans'
+// sizes differ, an option is out of range, or the filter needs ripmaps or a summed-area table the
+// texture was built without. `isa` picks the kernel (default: active_isa()); Isa::reference runs
+// the scalar double-precision reference.
+void sample(const Texture& texture, const SamplerOptions& options,
+            std::span<const TextureQuery> queries, std::span<Vec4> out,
+            std::optional<Isa> isa = std::nullopt);
+
+std::string_view texture_filter_name(TextureFilter filter);
+std::optional<TextureFilter> parse_texture_filter(std::string_view name);
+std::string_view wrap_mode_name(WrapMode wrap);
+std::optional<WrapMode> parse_wrap_mode(std::string_view name);
+std::string_view lod_formula_name(LodFormula formula);
+std::optional<LodFormula> parse_lod_formula(std::string_view name);
+
+}  // namespace edgewise

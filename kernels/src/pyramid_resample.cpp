@@ -1,0 +1,225 @@
+// A separable resampler for pyramid levels: each output texel of an axis is a weighted sum of
+// source texels (its taps), computed once per axis and applied to every row or column.
+//
+// Alpha is filtered like any other channel, as a straight (not premultiplied) value: the texture
+// stores straight alpha and the sampler filters it that way too, so a pyramid level is what the
+// sampler would compute from the finer one.
+#include "pyramid_resample.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+namespace edgewise::detail {
+namespace {
+
+struct Tap {
+  std::int32_t index;  // source texel along the axis
+  double weight;
+};
+
+// Output texel c of an axis reads taps[first[c] .. first[c + 1]).
+struct AxisTaps {
+  std::vector<std::size_t> first{0};
+  std::vector<Tap> taps;
+};
+
+// The exact area average: coarse texel c of n_out covers the source interval
+// [c n_in / n_out, (c + 1) n_in / n_out). In units of 1 / n_out that interval and the source
+// texels' edges are integers, so each overlap is an exact integer and the weights are
+// overlap / n_in. For n_in = 2 n_out this is the 2-tap box (1/2, 1/2); for n_in = 2n + 1,
+// n_out = n, the 3-tap polyphase box (n - c, n, c + 1) / (2n + 1).
+AxisTaps box_taps(std::int32_t n_in, std::int32_t n_out) {
+  AxisTaps axis;
+  for (std::int64_t c = 0; c < n_out; ++c) {
+    const std::int64_t lo = c * n_in, hi = (c + 1) * n_in;
+    for (std::int64_t k = lo / n_out; k * n_out < hi; ++k) {
+      const std::int64_t overlap = std::min(hi, (k + 1) * n_out) - std::max(lo, k * n_out);
+      axis.taps.push_back({static_cast<std::int32_t>(k), static_cast<double>(overlap) / n_in});
+    }
+    axis.first.push_back(axis.taps.size());
+  }
+  return axis;
+}
+
+// Lanczos a = 3: sinc(x) sinc(x / 3) on |x| < 3.
+double lanczos3(double x) {
+  if (x == 0.0) return 1.0;
+  if (std::abs(x) >= 3.0) return 0.0;
+  const double px = std::numbers::pi * x;
+  return 3.0 * std::sin(px) * std::sin(px / 3.0) / (px * px);
+}
+
+// Lanczos 3 stretched to the coarse spacing: coarse texel c is centred at source position
+// (c + 0.5) n_in / n_out - 0.5 and reads the source texels within 3 coarse texels of it, clamped
+// to the edge; the weights are normalized to sum 1 (the sampled kernel's sum is not exactly 1).
+AxisTaps lanczos3_taps(std::int32_t n_in, std::int32_t n_out) {
+  AxisTaps axis;
+  const double scale = static_cast<double>(n_in) / n_out;
+  for (std::int32_t c = 0; c < n_out; ++c) {
+    const double centre = (c + 0.5) * scale - 0.5;
+    const auto first = static_cast<std::int64_t>(std::ceil(centre - 3.0 * scale));
+    const auto last = static_cast<std::int64_t>(std::floor(centre + 3.0 * scale));
+    double sum = 0.0;
+    const std::size_t begin = axis.taps.size();
+    for (std::int64_t k = first; k <= last; ++k) {
+      const double weight = lanczos3((static_cast<double>(k) - centre) / scale);
+      const auto index = static_cast<std::int32_t>(std::clamp<std::int64_t>(k, 0, n_in - 1));
+      axis.taps.push_back({index, weight});
+      sum += weight;
+    }
+    for (std::size_t i = begin; i < axis.taps.size(); ++i)
+      axis.taps[i].weight /= sum;
+    axis.first.push_back(axis.taps.size());
+  }
+  return axis;
+}
+
+AxisTaps axis_taps(PyramidFilter filter, std::int32_t n_in, std::int32_t n_out) {
+  return filter == PyramidFilter::lanczos3 ? lanczos3_taps(n_in, n_out) : box_taps(n_in, n_out);
+}
+
+// Stored texels to linear doubles and back.
+class TexelCodec {
+ public:
+  TexelCodec(TexelFormat format, ColorEncoding encoding) : format_(format), encoding_(encoding) {
+    for (int code = 0; code < 256; ++code) {
+      alpha_[code] = code / 255.0;
+      colour_[code] = encoding == ColorEncoding::srgb ? srgb_to_linear(code / 255.0) : code / 255.0;
+    }
+  }
+
+  void decode(const std::byte* texels, std::size_t index, double out[4]) const {
+    if (format_ == TexelFormat::rgba32f) {
+      float value[4];
+      std::memcpy(value, texels + index * sizeof(value), sizeof(value));
+      for (int ch = 0; ch < 4; ++ch)
+        out[ch] = value[ch];
+      return;
+    }
+    const auto* code = reinterpret_cast<const std::uint8_t*>(texels) + index * 4;
+    for (int ch = 0; ch < 3; ++ch)
+      out[ch] = colour_[code[ch]];
+    out[3] = alpha_[code[3]];
+  }
+
+  void encode(const double in[4], std::byte* texels, std::size_t index) const {
+    if (format_ == TexelFormat::rgba32f) {
+      float value[4];
+      for (int ch = 0; ch < 4; ++ch)
+        value[ch] = to_float(in[ch]);
+      std::memcpy(texels + index * sizeof(value), value, sizeof(value));
+      return;
+    }
+    auto* code = reinterpret_cast<std::uint8_t*>(texels) + index * 4;
+    for (int ch = 0; ch < 4; ++ch) {
+      const bool srgb = encoding_ == ColorEncoding::srgb && ch < 3;
+      code[ch] = to_code(srgb ? linear_to_srgb(in[ch]) : in[ch]);
+    }
+  }
+
+ private:
+  // Round to nearest float as IEEE does, overflow included, without converting an out-of-range
+  // double (undefined behaviour): a Lanczos sum may overshoot the largest float.
+  static float to_float(double v) {
+    constexpr double kMax = std::numeric_limits<float>::max();
+    constexpr double kOverflow = kMax + 0x1p103;  // halfway to the next power of two: rounds up
+    if (std::isnan(v)) return std::numeric_limits<float>::quiet_NaN();
+    if (std::abs(v) >= kOverflow) return std::copysign(std::numeric_limits<float>::infinity(), v);
+    return static_cast<float>(std::clamp(v, -kMax, kMax));
+  }
+
+  // Nearest code, clamped (a Lanczos result may overshoot [0, 1]).
+  static std::uint8_t to_code(double v) {
+    const double scaled = std::clamp(v * 255.0, 0.0, 255.0);
+    return static_cast<std::uint8_t>(std::lround(scaled));
+  }
+
+  TexelFormat format_;
+  ColorEncoding encoding_;
+  double colour_[256];
+  double alpha_[256];
+};
+
+// Every texel of a w x h image of linear RGBA doubles.
+struct LinearImage {
+  std::int32_t width;
+  std::int32_t height;
+  std::vector<double> rgba;
+  double* texel(std::int32_t x, std::int32_t y) {
+    return rgba.data() + (static_cast<std::size_t>(y) * width + x) * 4;
+  }
+};
+
+// Horizontal pass: decodes the source and filters its rows to `width` texels (decoding only, when
+// the width stays). The result, 32 bytes per texel, is the resampler's only large buffer.
+LinearImage filter_rows(const TexelCodec& codec, PyramidFilter filter, const LevelView& source,
+                        std::int32_t width) {
+  LinearImage out{width, source.height,
+                  std::vector<double>(static_cast<std::size_t>(width) * source.height * 4)};
+  const std::size_t row = static_cast<std::size_t>(source.width);
+  if (width == source.width) {
+    for (std::int32_t y = 0; y < source.height; ++y) {
+      for (std::int32_t x = 0; x < width; ++x)
+        codec.decode(source.texels, y * row + x, out.texel(x, y));
+    }
+    return out;
+  }
+  const AxisTaps axis = axis_taps(filter, source.width, width);
+  std::vector<double> decoded(row * 4);
+  for (std::int32_t y = 0; y < source.height; ++y) {
+    for (std::int32_t x = 0; x < source.width; ++x) {
+      codec.decode(source.texels, y * row + x, decoded.data() + x * 4);
+    }
+    for (std::int32_t x = 0; x < width; ++x) {
+      double sum[4] = {0.0, 0.0, 0.0, 0.0};
+      for (std::size_t i = axis.first[x]; i < axis.first[x + 1]; ++i) {
+        const double* texel = decoded.data() + static_cast<std::size_t>(axis.taps[i].index) * 4;
+        for (int ch = 0; ch < 4; ++ch)
+          sum[ch] += axis.taps[i].weight * texel[ch];
+      }
+      std::copy(sum, sum + 4, out.texel(x, y));
+    }
+  }
+  return out;
+}
+
+// Vertical pass: filters the columns to `height` texels (none, when the height stays) and encodes.
+void filter_columns_and_encode(const TexelCodec& codec, PyramidFilter filter, LinearImage& image,
+                               std::byte* destination, std::int32_t height) {
+  const std::size_t row = static_cast<std::size_t>(image.width);
+  if (height == image.height) {
+    for (std::int32_t y = 0; y < height; ++y) {
+      for (std::int32_t x = 0; x < image.width; ++x)
+        codec.encode(image.texel(x, y), destination, y * row + x);
+    }
+    return;
+  }
+  const AxisTaps axis = axis_taps(filter, image.height, height);
+  for (std::int32_t y = 0; y < height; ++y) {
+    for (std::int32_t x = 0; x < image.width; ++x) {
+      double sum[4] = {0.0, 0.0, 0.0, 0.0};
+      for (std::size_t i = axis.first[y]; i < axis.first[y + 1]; ++i) {
+        const double* texel = image.texel(x, axis.taps[i].index);
+        for (int ch = 0; ch < 4; ++ch)
+          sum[ch] += axis.taps[i].weight * texel[ch];
+      }
+      codec.encode(sum, destination, y * row + x);
+    }
+  }
+}
+
+}  // namespace
+
+void resample_level(TexelFormat format, ColorEncoding encoding, PyramidFilter filter,
+                    const LevelView& source, std::byte* destination, std::int32_t width,
+                    std::int32_t height) {
+  const TexelCodec codec(format, encoding);
+  LinearImage rows = filter_rows(codec, filter, source, width);
+  filter_columns_and_encode(codec, filter, rows, destination, height);
+}
+
+}  // namespace edgewise::detail

@@ -1,0 +1,64 @@
+// What the per-ISA sampling kernels take: a Texture flattened into plain arrays (no batches cross
+// translation units), and the entry point each ISA defines.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "edgewise/sampler.hpp"
+#include "edgewise/texture.hpp"
+#include "edgewise/vector.hpp"
+
+namespace edgewise::detail {
+
+// Sizes and starts of a set of levels, in texels from the start of the texture's storage.
+// Starts fit int32: a texture has at most 2^30 texels in level 0 and 4/3 of that in all levels.
+struct LevelTable {
+  const std::int32_t* width = nullptr;
+  const std::int32_t* height = nullptr;
+  const std::int32_t* start = nullptr;
+  std::int32_t count = 0;
+};
+
+inline constexpr int kEwaWeights = 129;
+
+struct TextureDescription {
+  const std::byte* texels = nullptr;  // Texture::storage()
+  TexelFormat format = TexelFormat::rgba8;
+  const float* srgb_table = nullptr;  // 256 decoded values; null for linear textures
+  // Linear value = fetched value * channel_scale: 1 / 255 for 8-bit codes, 1 for decoded sRGB
+  // channels and float texels.
+  float channel_scale[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  float width = 0.0f, height = 0.0f;  // of level 0
+  // The EWA Gaussian: kEwaWeights entries, entry i the weight at Q = i / (kEwaWeights - 2), and
+  // a last 0 so that interpolating at Q = 1 reads no further.
+  const float* ewa_weights = nullptr;
+  LevelTable mips;
+  LevelTable rips;  // column-major in width: (i, j) at j * rip_columns + i
+  std::int32_t rip_columns = 0;
+  std::int32_t rip_rows = 0;
+};
+
+// out[i] = the filtered linear RGBA at queries[i], for the filters with a vectorized kernel
+// (has_sample_kernel()). One definition per ISA, in kernels/isa/sample_<isa>.cpp.
+using SampleKernel = void (*)(const TextureDescription& texture, const SamplerOptions& options,
+                              const TextureQuery* queries, std::size_t count, Vec4* out);
+
+}  // namespace edgewise::detail
+
+namespace edgewise::isa_sse2 {
+void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
+            std::size_t, Vec4*);
+}
+namespace edgewise::isa_sse4_1 {
+void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
+            std::size_t, Vec4*);
+}
+namespace edgewise::isa_avx2 {
+void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
+            std::size_t, Vec4*);
+}
+namespace edgewise::isa_neon {
+void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
+            std::size_t, Vec4*);
+}

@@ -1,0 +1,101 @@
+#include "sample/record_files.hpp"
+
+#include <sys/stat.h>
+
+#include <bit>
+#include <cerrno>
+#include <cstdio>
+#include <stdexcept>
+#include <utility>
+
+#include "sample/file_error.hpp"
+
+namespace edgewise::sample_tool {
+
+// The records are the in-memory structs, read and written as they are.
+static_assert(std::endian::native == std::endian::little,
+              "the query and result files are little-endian; this host is not");
+static_assert(sizeof(TextureQuery) == kQueryRecordBytes, "TextureQuery is six packed floats");
+static_assert(sizeof(Vec4) == kResultRecordBytes, "Vec4 is four packed floats");
+
+namespace {
+
+std::runtime_error not_whole_records(const std::string& path, std::uint64_t bytes) {
+  return std::runtime_error(path + ": " + std::to_string(bytes) +
+                            " bytes is not a whole number of 24-byte query records "
+                            "(s, t, dsdx, dtdx, dsdy, dtdy as float32)");
+}
+
+}  // namespace
+
+QueryReader::QueryReader(std::string path) : path_(std::move(path)) {
+  file_ = std::fopen(path_.c_str(), "rb");
+  if (file_ == nullptr) throw file_error(path_, "cannot open", errno);
+  struct stat status {};
+  if (::fstat(::fileno(file_), &status) != 0) {
+    const int error = errno;
+    std::fclose(file_);
+    throw file_error(path_, "cannot open", error);
+  }
+  const auto refuse = [&](std::runtime_error error) {
+    std::fclose(file_);
+    throw std::move(error);
+  };
+  if (S_ISDIR(status.st_mode)) refuse(file_error(path_, "cannot open", EISDIR));
+  if (S_ISREG(status.st_mode)) {
+    const auto bytes = static_cast<std::uint64_t>(status.st_size);
+    if (bytes % kQueryRecordBytes != 0) refuse(not_whole_records(path_, bytes));
+    count_ = bytes / kQueryRecordBytes;
+  }
+}
+
+QueryReader::~QueryReader() {
+  std::fclose(file_);
+}
+
+std::size_t QueryReader::read(std::span<TextureQuery> chunk) {
+  // fread returns short only at the end of the file or on an error.
+  const std::size_t bytes = std::fread(chunk.data(), 1, chunk.size_bytes(), file_);
+  if (std::ferror(file_)) throw file_error(path_, "cannot read", errno);
+  if (bytes % kQueryRecordBytes != 0) {
+    const std::size_t left_over = bytes % kQueryRecordBytes;
+    throw std::runtime_error(path_ + ": ends inside a query record (" + std::to_string(left_over) +
+                             (left_over == 1 ? " byte" : " bytes") +
+                             " left over; records are 24 bytes)");
+  }
+  return bytes / kQueryRecordBytes;
+}
+
+ResultWriter::ResultWriter(std::string path) : path_(std::move(path)) {
+  file_ = std::fopen(path_.c_str(), "wb");
+  if (file_ == nullptr) throw file_error(path_, "cannot write", errno);
+  struct stat status {};
+  regular_file_ = ::fstat(::fileno(file_), &status) == 0 && S_ISREG(status.st_mode);
+}
+
+ResultWriter::~ResultWriter() {
+  if (file_ == nullptr) return;  // finished
+  std::fclose(file_);
+  // A device or pipe (/dev/stdout) is not ours to remove.
+  if (regular_file_) std::remove(path_.c_str());
+}
+
+void ResultWriter::write(std::span<const Vec4> results) {
+  if (std::fwrite(results.data(), 1, results.size_bytes(), file_) != results.size_bytes()) {
+    throw file_error(path_, "cannot write", errno);
+  }
+}
+
+void ResultWriter::finish() {
+  const bool flushed = std::fflush(file_) == 0;
+  const int error = errno;
+  if (!flushed) throw file_error(path_, "cannot write", error);
+  std::FILE* file = std::exchange(file_, nullptr);
+  if (std::fclose(file) != 0) {
+    const int close_error = errno;
+    if (regular_file_) std::remove(path_.c_str());
+    throw file_error(path_, "cannot write", close_error);
+  }
+}
+
+}  // namespace edgewise::sample_tool
