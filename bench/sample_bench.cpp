@@ -152,7 +152,9 @@ void peer_stream(benchmark::State& state, PeerMode mode, Stream stream) {
 
 // Filters with a vectorized kernel; summed_area runs the reference on every ISA for now, so it
 // is measured once, as the reference.
-bool vectorized(TextureFilter filter) { return filter != TextureFilter::summed_area; }
+bool vectorized(TextureFilter filter) {
+  return filter != TextureFilter::summed_area;
+}
 
 }  // namespace
 

@@ -144,8 +144,7 @@ EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> wrap_any_index(xsimd::batch<std
   using Ints = xsimd::batch<std::int32_t, Arch>;
   if (mode == WrapMode::clamp_to_edge) return xsimd::min(xsimd::max(i, Ints(0)), n - Ints(1));
   const Ints period = mode == WrapMode::mirror ? n + n : n;
-  const Ints quotient =
-      xsimd::to_int(xsimd::floor(xsimd::to_float(i) / xsimd::to_float(period)));
+  const Ints quotient = xsimd::to_int(xsimd::floor(xsimd::to_float(i) / xsimd::to_float(period)));
   Ints r = i - quotient * period;
   r = xsimd::select(r < Ints(0), r + period, r);
   r = xsimd::select(r >= period, r - period, r);

@@ -262,9 +262,9 @@ class TextureFilters {
       const LevelLanes<Arch> lanes = level_lanes<Arch>(texture_.mips, xsimd::to_int(level));
       const Floats eu = xsimd::sqrt(scaled_u2(axes, lanes) + Floats(1.0f));
       const Floats ev = xsimd::sqrt(scaled_v2(axes, lanes) + Floats(1.0f));
-      const auto up = (level < last) & ((Floats(2.0f) * eu + Floats(1.0f)) *
-                                            (Floats(2.0f) * ev + Floats(1.0f)) >
-                                        Floats(0x1p22f));
+      const auto up = (level < last) &
+                      ((Floats(2.0f) * eu + Floats(1.0f)) * (Floats(2.0f) * ev + Floats(1.0f)) >
+                       Floats(0x1p22f));
       if (!xsimd::any(up)) break;
       level = xsimd::select(up, level + Floats(1.0f), level);
       f = xsimd::select(up, Floats(0.0f), f);
@@ -280,9 +280,9 @@ class TextureFilters {
     Rgba<Arch> result = ewa_level(axes, level_lanes<Arch>(texture_.mips, l0), q.s, q.t);
     if (xsimd::any(f > Floats(0.0f))) {
       const Ints l1 = xsimd::min(l0 + Ints(1), Ints(texture_.mips.count - 1));
-      result = weighted_sum<Arch>(result, Floats(1.0f) - f,
-                                  ewa_level(axes, level_lanes<Arch>(texture_.mips, l1), q.s, q.t),
-                                  f);
+      result =
+          weighted_sum<Arch>(result, Floats(1.0f) - f,
+                             ewa_level(axes, level_lanes<Arch>(texture_.mips, l1), q.s, q.t), f);
     }
     // No footprint magnifies; the last level is its single texel.
     const Rgba<Arch> magnified = bilinear0(q.s, q.t);
@@ -354,8 +354,7 @@ class TextureFilters {
         const Floats du = x - cu;
         const Floats Q = (A * du + B * dv) * du + C * dv * dv;
         const auto inside = (column < columns) & (Q < Floats(1.0f));
-        const Floats position =
-            xsimd::min(xsimd::max(Q, Floats(0.0f)), Floats(1.0f)) * table_last;
+        const Floats position = xsimd::min(xsimd::max(Q, Floats(0.0f)), Floats(1.0f)) * table_last;
         const Floats bin = xsimd::floor(position);
         const Ints index = xsimd::to_int(bin);
         const Floats w0 = gather_float<Arch>(texture_.ewa_weights, index);

@@ -76,7 +76,8 @@ const float* ewa_weights() {
     std::array<float, detail::kEwaWeights> weights{};
     for (int i = 0; i + 1 < detail::kEwaWeights; ++i) {
       const double r2 = static_cast<double>(i) / (detail::kEwaWeights - 2);
-      weights[static_cast<std::size_t>(i)] = static_cast<float>(std::exp(-2.0 * r2) - std::exp(-2.0));
+      weights[static_cast<std::size_t>(i)] =
+          static_cast<float>(std::exp(-2.0 * r2) - std::exp(-2.0));
     }
     return weights;
   }();
