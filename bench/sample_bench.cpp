@@ -150,12 +150,6 @@ void peer_stream(benchmark::State& state, PeerMode mode, Stream stream) {
 }
 #endif
 
-// Filters with a vectorized kernel; summed_area runs the reference on every ISA for now, so it
-// is measured once, as the reference.
-bool vectorized(TextureFilter filter) {
-  return filter != TextureFilter::summed_area;
-}
-
 }  // namespace
 
 void register_sample_benchmarks() {
@@ -163,7 +157,6 @@ void register_sample_benchmarks() {
     for (Isa isa : supported_isas()) {
       for (int f = 0; f <= static_cast<int>(TextureFilter::ewa); ++f) {
         const auto filter = static_cast<TextureFilter>(f);
-        if (isa != Isa::reference && !vectorized(filter)) continue;
         const std::string name = "Sample/" + std::string(isa_name(isa)) + "/" +
                                  std::string(texture_filter_name(filter)) + "/" +
                                  stream_name(stream);

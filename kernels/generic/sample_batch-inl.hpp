@@ -9,6 +9,7 @@
 
 #include "../src/sample_kernels.hpp"
 #include "interleave-inl.hpp"
+#include "summed_area-inl.hpp"
 #include "texture_filters-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
@@ -67,7 +68,9 @@ constexpr std::size_t kLanes = Floats::size;
 // results for bad input: lanes with a non-finite position or (when the filter reads them) a
 // non-finite derivative are computed from harmless values, so every index stays in range, and
 // then replaced by (0, 0, 0, 0) or the coarsest texel.
-template <bool kReadsDerivatives, class Filter>
+// kStoredUnits: the filter returns the texture's stored units (texel_fetch-inl.hpp), scaled to
+// linear here; otherwise it returns linear values.
+template <bool kReadsDerivatives, bool kStoredUnits = true, class Filter>
 [[gnu::always_inline]] inline void sample_all(const detail::TextureDescription& texture,
                                               const TextureQuery* queries, std::size_t count,
                                               Vec4* out, Filter filter) {
@@ -75,8 +78,11 @@ template <bool kReadsDerivatives, class Filter>
   const Rgba<Arch> coarsest = fetch_texels<Arch>(texture, Ints(mips.start[mips.count - 1]));
   const Floats largest(std::numeric_limits<float>::max());
   Floats scale[4];
-  for (int k = 0; k < 4; ++k)
+  Floats coarsest_linear[4];
+  for (int k = 0; k < 4; ++k) {
     scale[k] = Floats(texture.channel_scale[k]);
+    coarsest_linear[k] = coarsest.c[k] * scale[k];
+  }
   for (std::size_t first = 0; first < count; first += kLanes) {
     const std::size_t n = count - first < kLanes ? count - first : kLanes;
     QueryLanes<Arch> q = load_queries(queries + first, n);
@@ -93,13 +99,35 @@ template <bool kReadsDerivatives, class Filter>
     }
     Rgba<Arch> rgba = filter(q);
     for (int k = 0; k < 4; ++k) {
+      if constexpr (kStoredUnits) rgba.c[k] = rgba.c[k] * scale[k];
       if constexpr (kReadsDerivatives) {
-        rgba.c[k] = xsimd::select(derivatives_ok, rgba.c[k], coarsest.c[k]);
+        rgba.c[k] = xsimd::select(derivatives_ok, rgba.c[k], coarsest_linear[k]);
       }
-      rgba.c[k] = xsimd::select(position_ok, rgba.c[k] * scale[k], Floats(0.0f));
+      rgba.c[k] = xsimd::select(position_ok, rgba.c[k], Floats(0.0f));
     }
     store_results(rgba, n, out + first);
   }
+}
+
+// The summed-area box per lane: its table is double and its terms differ per query, so lanes
+// are taken one at a time, each query's four channels summed together in double batches.
+inline Rgba<Arch> summed_area_lanes(const SummedAreaBox<Arch>& box, const QueryLanes<Arch>& q) {
+  alignas(64) float fields[6][kLanes];
+  const Floats* values[6] = {&q.s, &q.t, &q.dsdx, &q.dtdx, &q.dsdy, &q.dtdy};
+  for (int f = 0; f < 6; ++f)
+    values[f]->store_aligned(fields[f]);
+  alignas(64) float channels[4][kLanes];
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    float rgba[4];
+    box.average(fields[0][l], fields[1][l], fields[2][l], fields[3][l], fields[4][l], fields[5][l],
+                rgba);
+    for (int k = 0; k < 4; ++k)
+      channels[k][l] = rgba[k];
+  }
+  Rgba<Arch> out;
+  for (int k = 0; k < 4; ++k)
+    out.c[k] = Floats::load_aligned(channels[k]);
+  return out;
 }
 
 }  // namespace sample_detail
@@ -141,8 +169,11 @@ void sample(const detail::TextureDescription& texture, const SamplerOptions& opt
                               [&](const Q& q) { return f.anisotropic(q); });
     case TextureFilter::ewa:
       return sample_all<true>(texture, queries, count, out, [&](const Q& q) { return f.ewa(q); });
-    case TextureFilter::summed_area:
-      break;  // no vectorized kernel: sampler.cpp runs the reference
+    case TextureFilter::summed_area: {
+      const SummedAreaBox<Arch> box(texture, options);
+      return sample_all<true, false>(texture, queries, count, out,
+                                     [&](const Q& q) { return summed_area_lanes(box, q); });
+    }
   }
 }
 

@@ -34,7 +34,9 @@ struct TextureDescription {
   // a last 0 so that interpolating at Q = 1 reads no further.
   const float* ewa_weights = nullptr;
   LevelTable mips;
-  LevelTable rips;  // column-major in width: (i, j) at j * rip_columns + i
+  LevelTable rips;
+  const SummedAreaTable* summed_area_table =
+      nullptr;  // column-major in width: (i, j) at j * rip_columns + i
   std::int32_t rip_columns = 0;
   std::int32_t rip_rows = 0;
 };

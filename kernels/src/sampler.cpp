@@ -84,11 +84,6 @@ const float* ewa_weights() {
   return table.data();
 }
 
-// The filters with a vectorized kernel; the others run the reference on every ISA.
-bool has_sample_kernel(TextureFilter filter) {
-  return filter != TextureFilter::summed_area;
-}
-
 }  // namespace
 
 void sample(const Texture& texture, const SamplerOptions& options,
@@ -105,7 +100,7 @@ void sample(const Texture& texture, const SamplerOptions& options,
   }
   if (queries.empty()) return;
   const detail::SampleKernel kernel = kernel_for(chosen);
-  if (kernel == nullptr || !has_sample_kernel(options.filter)) {
+  if (kernel == nullptr) {
     for (std::size_t i = 0; i < queries.size(); ++i) {
       const reference::Rgba rgba = reference::sample(texture, options, queries[i]);
       out[i] = {static_cast<float>(rgba[0]), static_cast<float>(rgba[1]),
@@ -134,6 +129,7 @@ void sample(const Texture& texture, const SamplerOptions& options,
   description.height = static_cast<float>(texture.height());
   description.mips = mips.table();
   description.rips = rips.table();
+  description.summed_area_table = texture.summed_area_table();
   description.rip_columns = texture.ripmap_columns();
   description.rip_rows =
       texture.ripmap_columns() > 0

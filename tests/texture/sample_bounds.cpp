@@ -101,6 +101,15 @@ double sample_bound(const Texture& texture, const TextureExtremes& t, const Samp
                      std::fabs(double(q.dtdy));
     position += 3.0 * 0x1p-24 * m * w;
   }
+  if (options.filter == TextureFilter::summed_area) {
+    // Double throughout (the table is), with the box's corners exact: only the order of the 64
+    // double products differs from the reference. Each term is |w_x w_y| S with sum |w_x| <=
+    // 4 (3 + 2 hu / W) and S scale <= T W H, over the box area 4 hu hv, hu >= 1/2: the sum's
+    // rounding is below 128 2^-53 16 (3 + 2 hu / W)(3 + 2 hv / H) T W H / (4 hu hv)
+    // <= 2^-44 T (6 W + 2)(6 H + 2). The final rounding to float is in `rounding`.
+    const double width = texture.width(), height = texture.height();
+    return rounding + 0x1p-44 * t.largest * (6 * width + 2) * (6 * height + 2);
+  }
   if (options.filter == TextureFilter::ewa)
     return ewa_bound(texture, t, options, q, position, rounding);
   double error = 2.0 * position * weight_lipschitz(options.filter) * t.range;

@@ -32,7 +32,7 @@ struct TestTexture {
 TestTexture make_texture(std::string name, std::int32_t width, std::int32_t height,
                          TexelFormat format, ColorEncoding encoding, std::uint64_t seed) {
   Random random(seed);
-  const TextureBuild build{PyramidFilter::box, true, false};
+  const TextureBuild build{PyramidFilter::box, true, true};
   const std::size_t values = 4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   Texture texture = [&] {
     if (format == TexelFormat::rgba8) {
@@ -133,6 +133,7 @@ std::vector<FilterCase> filter_cases() {
           {TextureFilter::anisotropic, 4, 4},
           {TextureFilter::anisotropic, 4, 16},
           {TextureFilter::anisotropic, 4, 16, LodFormula::max_axis, 0.25f},
+          {TextureFilter::summed_area},
           {TextureFilter::ewa, 4, 4},
           {TextureFilter::ewa, 4, 16, LodFormula::exact, -0.5f}};
 }
@@ -252,9 +253,13 @@ TEST(SampleArguments, RejectsMismatchedSpansAndOptionsOutOfRange) {
   options = {};
   options.lod_bias = std::numeric_limits<float>::infinity();
   EXPECT_THROW(sample(t.texture, options, queries, out), std::invalid_argument);
-  options = {};
-  options.filter = TextureFilter::summed_area;  // built without a summed-area table
-  EXPECT_THROW(sample(t.texture, options, queries, out), std::invalid_argument);
+  const std::vector<std::uint8_t> texels(4 * 4 * 4, 128);
+  const Texture bare = Texture::from_rgba8(4, 4, texels, ColorEncoding::linear);
+  for (TextureFilter filter : {TextureFilter::summed_area, TextureFilter::ripmap}) {
+    options = {};
+    options.filter = filter;  // the texture was built without its table or ripmaps
+    EXPECT_THROW(sample(bare, options, queries, out), std::invalid_argument);
+  }
   EXPECT_NO_THROW(sample(t.texture, {}, std::span<const TextureQuery>(), std::span<Vec4>()));
 }
 
