@@ -7,7 +7,9 @@ the scalar reference, and the comparison with published peer figures and with th
 - Shading/*: triangles/s, covered fragments/s and written pixels/s of draw(), against the
   shading targets (AVX2, one core);
 - ShadingMethod/*: fragments/s per interpolation method and perspective mode, relative to the
-  production method (plane equations, perspective-correct).
+  production method (plane equations, perspective-correct);
+- Sample/*, SamplePeer/*: texture samples/s per filter, ISA and query stream, beside
+  OpenImageIO's TextureSystem, against the sampling targets (AVX2, one core, ground plane).
 
 Usage: /usr/bin/python3 bench/summarize.py FILE.json [FILE.json ...]
   e.g. bench/results/<cpu-model>/coverage.json bench/results/<cpu-model>/shading.json
@@ -33,11 +35,23 @@ REFERENCE_SHARE = 16
 # The production interpolation setting, which the method table is relative to.
 BASELINE_METHOD = ("plane_equations", "correct")
 
+# Sampling targets (AVX2, one core, ground-plane stream), samples/s; anisotropic or EWA at 16x.
+SAMPLE_TARGET = {"bilinear": 150e6, "trilinear": 100e6, "anisotropic": 15e6, "ewa": 15e6}
+# The reference samples the first 1/SAMPLE_REFERENCE_SHARE of each stream (bench/sample_bench.cpp).
+SAMPLE_REFERENCE_SHARE = 64
+SAMPLE_FILTERS = ["nearest", "bilinear", "bicubic_catmull_rom", "bicubic_bspline", "mip_nearest",
+                  "trilinear", "supersample", "ripmap", "summed_area", "anisotropic", "ewa"]
+# Which OpenImageIO mode each filter is compared with.
+SAMPLE_PEER = {"nearest": "closest", "bilinear": "bilinear", "bicubic_bspline": "bicubic",
+               "trilinear": "trilinear", "anisotropic": "anisotropic16"}
+
 COVERAGE_NAME = re.compile(r"^Coverage/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 SHADING_NAME = re.compile(r"^Shading/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 PLAIN_DEPTH_NAME = re.compile(r"^ShadingWithoutTileDepth/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 METHOD_NAME = re.compile(r"^ShadingMethod/(?P<isa>[a-z0-9_]+)/(?P<method>[a-z_]+)/"
                          r"(?P<perspective>[a-z]+)/area:(?P<area>\d+)(/min_time:[0-9.]+)?$")
+SAMPLE_NAME = re.compile(r"^Sample/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<stream>[a-z_]+)$")
+PEER_NAME = re.compile(r"^SamplePeer/oiio/(?P<mode>[a-z0-9_]+)/(?P<stream>[a-z_]+)$")
 ISA_ORDER = ["reference", "sse2", "sse4_1", "avx2", "neon"]
 METHOD_ORDER = ["nearest_vertex", "inverse_distance", "subtriangle_areas", "edge_functions",
                 "scanline", "plane_equations"]
@@ -250,6 +264,47 @@ def print_methods(methods):
           "triangle; affine skips the perspective divide")
 
 
+def print_sampling(samples, peers):
+    """Samples/s per filter and ISA for each stream, the peer's rate and the targets."""
+    isas = [isa for isa in ISA_ORDER if any(k[2] == isa for k in samples)]
+    for stream in ("ground_plane", "magnification"):
+        if not any(key[1] == stream for key in samples):
+            continue
+        print(f"texture sampling, {stream} stream (1920x1080 queries, 1024^2 RGBA8 checkerboard),"
+              " samples/s")
+        header = ["filter"] + isas + ["avx2 / reference", "OpenImageIO", "avx2 / OIIO", "target"]
+        rows = []
+        for name in SAMPLE_FILTERS:
+            row = [name]
+            rates = {}
+            for isa in isas:
+                entry = samples.get((name, stream, isa))
+                if entry is None or "error" in entry:
+                    row.append("-" if entry is None else "ERROR: " + entry["error"])
+                    continue
+                rates[isa] = entry["items_per_second"]
+                row.append(si(rates[isa], "/s"))
+            fast = rates.get("avx2")
+            row.append(f"{fast / rates['reference']:.1f}x" if fast and "reference" in rates
+                       else "-")
+            peer = peers.get((SAMPLE_PEER.get(name), stream))
+            peer_rate = peer.get("items_per_second") if peer and "error" not in peer else None
+            row.append(si(peer_rate, "/s") if peer_rate else "-")
+            row.append(f"{fast / peer_rate:.1f}x" if fast and peer_rate else "-")
+            target = SAMPLE_TARGET.get(name) if stream == "ground_plane" else None
+            if target and fast:
+                verdict = "met" if fast >= target else "missed"
+                row.append(f"{si(target, '/s')} ({fast / target:.2f}x, {verdict})")
+            else:
+                row.append("-")
+            rows.append(row)
+        print_table(header, rows)
+        print()
+    print(f"the reference samples the first 1/{SAMPLE_REFERENCE_SHARE} of each stream; "
+          "OpenImageIO's modes: closest, bilinear, bicubic (a B-spline), trilinear, "
+          "anisotropic 16 (as bench/sample_bench.cpp sets them)")
+
+
 def main(argv):
     if len(argv) < 2:
         print(__doc__.strip(), file=sys.stderr)
@@ -271,15 +326,18 @@ def main(argv):
     plain_depth = collect(results, PLAIN_DEPTH_NAME, lambda m: (int(m["area"]), m["isa"]))
     methods = collect(results, METHOD_NAME,
                       lambda m: (int(m["area"]), m["method"], m["perspective"], m["isa"]))
+    samples = collect(results, SAMPLE_NAME, lambda m: (m["filter"], m["stream"], m["isa"]))
+    peers = collect(results, PEER_NAME, lambda m: (m["mode"], m["stream"]))
     clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
-    if not (coverage or shading or methods):
-        print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/* or ShadingMethod/* benchmarks",
-              file=sys.stderr)
+    if not (coverage or shading or methods or samples):
+        print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/*, ShadingMethod/* or Sample/* "
+              "benchmarks", file=sys.stderr)
         return 1
 
     for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
                                        (print_shading, shading, (shading, plain_depth)),
-                                       (print_methods, methods, (methods,))):
+                                       (print_methods, methods, (methods,)),
+                                       (print_sampling, samples, (samples, peers))):
         if found:
             print()
             title_printer(*args)
