@@ -32,11 +32,11 @@ constexpr std::size_t kLanes = Floats::size;
                                                             std::size_t count) {
   static_assert(sizeof(TextureQuery) == 6 * sizeof(float));
   const float* fields = &queries[0].s;
-  if (count == kLanes) {  // a whole batch: one strided gather per field
+  if (count == kLanes) {  // a whole batch: one strided load per lane and field
     const Ints stride = Ints(6) * lane_index();
-    return {gather_float<Arch>(fields + 0, stride), gather_float<Arch>(fields + 1, stride),
-            gather_float<Arch>(fields + 2, stride), gather_float<Arch>(fields + 3, stride),
-            gather_float<Arch>(fields + 4, stride), gather_float<Arch>(fields + 5, stride)};
+    return {load_lanes_float<Arch>(fields + 0, stride), load_lanes_float<Arch>(fields + 1, stride),
+            load_lanes_float<Arch>(fields + 2, stride), load_lanes_float<Arch>(fields + 3, stride),
+            load_lanes_float<Arch>(fields + 4, stride), load_lanes_float<Arch>(fields + 5, stride)};
   }
   alignas(64) float lanes[6][kLanes];
   for (std::size_t l = 0; l < kLanes; ++l) {

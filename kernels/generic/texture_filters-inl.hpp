@@ -271,7 +271,10 @@ class TextureFilters {
     }
     // Lanes answered otherwise (no footprint, or the last level) take a unit disk in the loops
     // below, so that their sizes (huge or not finite) never set the batch's loop counts.
-    const auto no_footprint = major2 == Floats(0.0f);
+    // Zero derivatives, not an underflowing squared length: tiny footprints still take the
+    // unit disk, as in the reference.
+    const Floats zero(0.0f);
+    const auto no_footprint = (ux == zero) & (vx == zero) & (uy == zero) & (vy == zero);
     const auto at_last = level >= last;
     const auto elsewhere = no_footprint | at_last;
     for (Floats* axis : {&axes.mu, &axes.mv, &axes.nu, &axes.nv})

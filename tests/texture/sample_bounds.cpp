@@ -130,19 +130,25 @@ std::vector<reference::Rgba> accepted_references(const Texture& texture,
                                                  const SamplerOptions& options,
                                                  const TextureQuery& q) {
   std::vector<reference::Rgba> results{reference::sample(texture, options, q)};
-  if (!finite_query(q)) return results;
-  if (options.filter == TextureFilter::nearest) {
-    for (int axis = 0; axis < 2; ++axis) {
-      for (double sign : {-1.0, 1.0}) {
-        TextureQuery moved = q;
-        float& c = axis == 0 ? moved.s : moved.t;
-        // The position error in texture units, plus the float spacing near c.
-        const double step = kPositionError + 2.0 * std::fabs(double(c)) * 0x1p-24;
-        c = static_cast<float>(double(c) + sign * step);
-        results.push_back(reference::sample(texture, options, moved));
+  // nearest reads no derivative: its neighbours need only a finite position.
+  if (options.filter == TextureFilter::nearest && std::isfinite(q.s) && std::isfinite(q.t)) {
+    // The position error in texture units, plus the float spacing near c; both coordinates
+    // may move at once (a query near a texel corner).
+    const auto moved = [](float c, int sign) {
+      const double step = kPositionError + 2.0 * std::fabs(double(c)) * 0x1p-24;
+      return static_cast<float>(double(c) + sign * step);
+    };
+    for (int ds = -1; ds <= 1; ++ds) {
+      for (int dt = -1; dt <= 1; ++dt) {
+        if (ds == 0 && dt == 0) continue;
+        TextureQuery near = q;
+        if (ds != 0) near.s = moved(q.s, ds);
+        if (dt != 0) near.t = moved(q.t, dt);
+        results.push_back(reference::sample(texture, options, near));
       }
     }
   }
+  if (!finite_query(q)) return results;
   if (options.filter == TextureFilter::mip_nearest) {
     for (double sign : {-1.0, 1.0}) {
       SamplerOptions moved = options;
@@ -159,6 +165,35 @@ std::vector<reference::Rgba> accepted_references(const Texture& texture,
         d[0] = static_cast<float>(d[0] * scale);
         d[1] = static_cast<float>(d[1] * scale);
         results.push_back(reference::sample(texture, options, moved));
+      }
+    }
+    // The ratio folds at 1: axes within the scale of each other may count as equal (one probe,
+    // lambda from Pmax), which no scaled neighbour above reaches; max_anisotropy 1 gives it.
+    if (options.filter == TextureFilter::anisotropic) {
+      const double w = texture.width(), h = texture.height();
+      const double ux = q.dsdx * w, vx = q.dtdx * h, uy = q.dsdy * w, vy = q.dtdy * h;
+      const bool exact = options.lod == LodFormula::exact;
+      const double px = exact ? std::hypot(ux, vx) : std::max(std::fabs(ux), std::fabs(vx));
+      const double py = exact ? std::hypot(uy, vy) : std::max(std::fabs(uy), std::fabs(vy));
+      if (std::max(px, py) <= std::min(px, py) * (1.0 + kAnisotropyScale)) {
+        SamplerOptions one = options;
+        one.max_anisotropy = 1;
+        results.push_back(reference::sample(texture, one, q));
+      }
+    }
+    // EWA's clamp applies when |minor| M < |major|; float lengths a few ulps apart may land on
+    // the equality, which leaves the ellipse unclamped. Scaling an axis cannot reach that side
+    // when M = 1 (any inequality clamps), so near the boundary the reference with M raised,
+    // which leaves this ellipse unclamped, is accepted too.
+    if (options.filter == TextureFilter::ewa && options.max_anisotropy < kMaxAnisotropyLimit) {
+      const double w = texture.width(), h = texture.height();
+      const double a = std::hypot(q.dsdx * w, q.dtdx * h), b = std::hypot(q.dsdy * w, q.dtdy * h);
+      const double major = std::max(a, b), minor = std::min(a, b);
+      const double m = options.max_anisotropy;
+      if (std::fabs(minor * m - major) <= kAnisotropyScale * major) {
+        SamplerOptions unclamped = options;
+        unclamped.max_anisotropy = kMaxAnisotropyLimit;
+        results.push_back(reference::sample(texture, unclamped, q));
       }
     }
   }
