@@ -56,6 +56,7 @@
 #include "edgewise/render.hpp"
 #include "reference/interpolation_reference.hpp"
 #include "render/colour_bounds.hpp"
+#include "seed_files.hpp"
 
 namespace {
 
@@ -852,18 +853,7 @@ bool printing() {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  const char* directory = std::getenv("EDGEWISE_FUZZ_SEEDS");
-  if (directory == nullptr || directory[0] == '\0') return 0;
-  const std::vector<std::vector<std::uint8_t>> seeds = seed_inputs();
-  for (std::size_t k = 0; k < seeds.size(); ++k) {
-    const std::string path = std::string(directory) + "/seed-draw-" + std::to_string(k);
-    if (std::FILE* file = std::fopen(path.c_str(), "wb")) {
-      std::fwrite(seeds[k].data(), 1, seeds[k].size(), file);
-      std::fclose(file);
-    } else {
-      std::fprintf(stderr, "fuzz_draw: cannot write %s\n", path.c_str());
-    }
-  }
+  edgewise::fuzz::write_seed_files("fuzz_draw", "draw", seed_inputs());
   return 0;
 }
 

@@ -57,6 +57,7 @@
 #include "edgewise/texture.hpp"
 #include "random.hpp"
 #include "reference/sample_reference.hpp"
+#include "seed_files.hpp"
 #include "texture/sample_bounds.hpp"
 
 namespace {
@@ -507,18 +508,7 @@ void check_results(const Case& c, const Texture& texture, const test::TextureExt
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  const char* directory = std::getenv("EDGEWISE_FUZZ_SEEDS");
-  if (directory == nullptr || directory[0] == '\0') return 0;
-  const std::vector<std::vector<std::uint8_t>> seeds = seed_inputs();
-  for (std::size_t k = 0; k < seeds.size(); ++k) {
-    const std::string path = std::string(directory) + "/seed-sample-" + std::to_string(k);
-    if (std::FILE* file = std::fopen(path.c_str(), "wb")) {
-      std::fwrite(seeds[k].data(), 1, seeds[k].size(), file);
-      std::fclose(file);
-    } else {
-      std::fprintf(stderr, "fuzz_sample: cannot write %s\n", path.c_str());
-    }
-  }
+  edgewise::fuzz::write_seed_files("fuzz_sample", "sample", seed_inputs());
   return 0;
 }
 
