@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace edgewise::test {
 namespace {
@@ -129,6 +130,12 @@ PlaneValue plane_value(const ScreenTriangle& t, const double f[3], double px, do
   const double gx_size = (std::abs(f1 * y2) + std::abs(f2 * y1)) / std::abs(area);
   const double gy_size = (std::abs(f2 * x1) + std::abs(f1 * x2)) / std::abs(area);
   const double magnitude = std::abs(f[0]) + gx_size * std::abs(dx) + gy_size * std::abs(dy);
+  // The kernels hold the plane in float: a value or slope beyond float's range becomes infinite
+  // there (and infinity times a zero offset NaN), which no rounding bound covers.
+  constexpr double kFloatMax = std::numeric_limits<float>::max();
+  if (!(std::abs(f[0]) < kFloatMax && std::abs(gx) < kFloatMax && std::abs(gy) < kFloatMax)) {
+    return {f[0] + gx * dx + gy * dy, std::numeric_limits<double>::infinity()};
+  }
   return {f[0] + gx * dx + gy * dy, 7.0 * 0x1p-24 * magnitude};
 }
 

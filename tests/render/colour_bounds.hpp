@@ -45,7 +45,8 @@ int allowed_codes(const VertexAttributes& triangle, const WeightErrors& e, Shadi
 // Gouraud colour by plane equations (the kernels' fast path for that method and model): each
 // channel, scaled to 0 .. 255, is its own plane, and perspective-correct a plane of value / w
 // divided by the plane of 1 / w. The largest difference in codes from the reference at pixel
-// center (px, py), or 255 where the bound is unbounded.
+// center (px, py), or 255 where the bound is unbounded (a plane value or slope beyond float's
+// range, which the kernels cannot hold).
 int plane_colour_codes(const ScreenTriangle& triangle, const VertexAttributes& attributes,
                        Perspective perspective, double px, double py);
 
