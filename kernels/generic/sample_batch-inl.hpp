@@ -27,42 +27,90 @@ constexpr std::size_t kLanes = Floats::size;
   return Ints::load_aligned(kIndex);
 }
 
-// Queries [first, first + count) as batches; lanes past the end repeat the last query.
-[[gnu::always_inline]] inline QueryLanes<Arch> load_queries(const TextureQuery* queries,
-                                                            std::size_t count) {
-  static_assert(sizeof(TextureQuery) == 6 * sizeof(float));
-  const float* fields = &queries[0].s;
-  if (count == kLanes) {  // a whole batch: one strided load per lane and field
-    const Ints stride = Ints(6) * lane_index();
-    return {load_lanes_float<Arch>(fields + 0, stride), load_lanes_float<Arch>(fields + 1, stride),
-            load_lanes_float<Arch>(fields + 2, stride), load_lanes_float<Arch>(fields + 3, stride),
-            load_lanes_float<Arch>(fields + 4, stride), load_lanes_float<Arch>(fields + 5, stride)};
+// Where queries come from and results go: records (TextureQuery, Vec4) or one array per field
+// (QueryFields, ResultChannels). load(first, n) returns queries [first, first + n) as batches,
+// lanes past n repeating the last query; store(rgba, first, n) writes n results.
+struct RecordQueries {
+  const TextureQuery* queries;
+
+  [[gnu::always_inline]] QueryLanes<Arch> load(std::size_t first, std::size_t count) const {
+    static_assert(sizeof(TextureQuery) == 6 * sizeof(float));
+    const float* fields = &queries[first].s;
+    if (count == kLanes) {  // a whole batch: one strided load per lane and field
+      const Ints stride = Ints(6) * lane_index();
+      return {
+          load_lanes_float<Arch>(fields + 0, stride), load_lanes_float<Arch>(fields + 1, stride),
+          load_lanes_float<Arch>(fields + 2, stride), load_lanes_float<Arch>(fields + 3, stride),
+          load_lanes_float<Arch>(fields + 4, stride), load_lanes_float<Arch>(fields + 5, stride)};
+    }
+    alignas(64) float lanes[6][kLanes];
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      const TextureQuery& q = queries[first + (l < count ? l : count - 1)];
+      const float values[6] = {q.s, q.t, q.dsdx, q.dtdx, q.dsdy, q.dtdy};
+      for (int f = 0; f < 6; ++f)
+        lanes[f][l] = values[f];
+    }
+    return {Floats::load_aligned(lanes[0]), Floats::load_aligned(lanes[1]),
+            Floats::load_aligned(lanes[2]), Floats::load_aligned(lanes[3]),
+            Floats::load_aligned(lanes[4]), Floats::load_aligned(lanes[5])};
   }
-  alignas(64) float lanes[6][kLanes];
-  for (std::size_t l = 0; l < kLanes; ++l) {
-    const TextureQuery& q = queries[l < count ? l : count - 1];
-    const float values[6] = {q.s, q.t, q.dsdx, q.dtdx, q.dsdy, q.dtdy};
-    for (int f = 0; f < 6; ++f)
-      lanes[f][l] = values[f];
+};
+
+struct RecordResults {
+  Vec4* out;
+
+  [[gnu::always_inline]] void store(const Rgba<Arch>& rgba, std::size_t first,
+                                    std::size_t count) const {
+    static_assert(sizeof(Vec4) == 4 * sizeof(float));
+    if (count == kLanes) {
+      store_interleaved<Arch>(rgba.c, &out[first].x);
+      return;
+    }
+    alignas(64) float channels[4][kLanes];
+    for (int k = 0; k < 4; ++k)
+      rgba.c[k].store_aligned(channels[k]);
+    for (std::size_t l = 0; l < count; ++l)
+      out[first + l] = {channels[0][l], channels[1][l], channels[2][l], channels[3][l]};
   }
-  return {Floats::load_aligned(lanes[0]), Floats::load_aligned(lanes[1]),
-          Floats::load_aligned(lanes[2]), Floats::load_aligned(lanes[3]),
-          Floats::load_aligned(lanes[4]), Floats::load_aligned(lanes[5])};
+};
+
+// Lanes [0, count) of `field + first`, the rest repeating the last.
+[[gnu::always_inline]] inline Floats load_field(const float* field, std::size_t first,
+                                                std::size_t count) {
+  if (count == kLanes) return Floats::load_unaligned(field + first);
+  alignas(64) float lanes[kLanes];
+  for (std::size_t l = 0; l < kLanes; ++l)
+    lanes[l] = field[first + (l < count ? l : count - 1)];
+  return Floats::load_aligned(lanes);
 }
 
-[[gnu::always_inline]] inline void store_results(const Rgba<Arch>& rgba, std::size_t count,
-                                                 Vec4* out) {
-  static_assert(sizeof(Vec4) == 4 * sizeof(float));
-  if (count == kLanes) {
-    store_interleaved<Arch>(rgba.c, &out[0].x);
-    return;
+struct FieldQueries {
+  detail::QueryFields fields;
+
+  [[gnu::always_inline]] QueryLanes<Arch> load(std::size_t first, std::size_t count) const {
+    return {load_field(fields.s, first, count),    load_field(fields.t, first, count),
+            load_field(fields.dsdx, first, count), load_field(fields.dtdx, first, count),
+            load_field(fields.dsdy, first, count), load_field(fields.dtdy, first, count)};
   }
-  alignas(64) float channels[4][kLanes];
-  for (int k = 0; k < 4; ++k)
-    rgba.c[k].store_aligned(channels[k]);
-  for (std::size_t l = 0; l < count; ++l)
-    out[l] = {channels[0][l], channels[1][l], channels[2][l], channels[3][l]};
-}
+};
+
+struct ChannelResults {
+  detail::ResultChannels channels;
+
+  [[gnu::always_inline]] void store(const Rgba<Arch>& rgba, std::size_t first,
+                                    std::size_t count) const {
+    for (int k = 0; k < 4; ++k) {
+      if (count == kLanes) {
+        rgba.c[k].store_unaligned(channels.c[k] + first);
+        continue;
+      }
+      alignas(64) float lanes[kLanes];
+      rgba.c[k].store_aligned(lanes);
+      for (std::size_t l = 0; l < count; ++l)
+        channels.c[k][first + l] = lanes[l];
+    }
+  }
+};
 
 // Every query through `filter` (one loop per filter, the filter inlined), with the defined
 // results for bad input: lanes with a non-finite position or (when the filter reads them) a
@@ -70,10 +118,11 @@ constexpr std::size_t kLanes = Floats::size;
 // then replaced by (0, 0, 0, 0) or the coarsest texel.
 // kStoredUnits: the filter returns the texture's stored units (texel_fetch-inl.hpp), scaled to
 // linear here; otherwise it returns linear values.
-template <bool kReadsDerivatives, bool kStoredUnits = true, class Filter>
+template <bool kReadsDerivatives, bool kStoredUnits = true, class Queries, class Results,
+          class Filter>
 [[gnu::always_inline]] inline void sample_all(const detail::TextureDescription& texture,
-                                              const TextureQuery* queries, std::size_t count,
-                                              Vec4* out, Filter filter) {
+                                              const Queries& queries, std::size_t count,
+                                              const Results& out, Filter filter) {
   const detail::LevelTable& mips = texture.mips;
   const Rgba<Arch> coarsest = fetch_texels<Arch>(texture, Ints(mips.start[mips.count - 1]));
   const Floats largest(std::numeric_limits<float>::max());
@@ -85,7 +134,7 @@ template <bool kReadsDerivatives, bool kStoredUnits = true, class Filter>
   }
   for (std::size_t first = 0; first < count; first += kLanes) {
     const std::size_t n = count - first < kLanes ? count - first : kLanes;
-    QueryLanes<Arch> q = load_queries(queries + first, n);
+    QueryLanes<Arch> q = queries.load(first, n);
     const auto position_ok = (xsimd::abs(q.s) <= largest) & (xsimd::abs(q.t) <= largest);
     q.s = xsimd::select(position_ok, q.s, Floats(0.0f));
     q.t = xsimd::select(position_ok, q.t, Floats(0.0f));
@@ -105,7 +154,7 @@ template <bool kReadsDerivatives, bool kStoredUnits = true, class Filter>
       }
       rgba.c[k] = xsimd::select(position_ok, rgba.c[k], Floats(0.0f));
     }
-    store_results(rgba, n, out + first);
+    out.store(rgba, first, n);
   }
 }
 
@@ -130,11 +179,10 @@ inline Rgba<Arch> summed_area_lanes(const SummedAreaBox<Arch>& box, const QueryL
   return out;
 }
 
-}  // namespace sample_detail
-
-void sample(const detail::TextureDescription& texture, const SamplerOptions& options,
-            const TextureQuery* queries, std::size_t count, Vec4* out) {
-  using namespace sample_detail;
+// Every query through the filter `options` names.
+template <class Queries, class Results>
+void sample_with(const detail::TextureDescription& texture, const SamplerOptions& options,
+                 const Queries& queries, std::size_t count, const Results& out) {
   const TextureFilters<Arch> f(texture, options);
   using Q = QueryLanes<Arch>;
   switch (options.filter) {
@@ -175,6 +223,21 @@ void sample(const detail::TextureDescription& texture, const SamplerOptions& opt
                                      [&](const Q& q) { return summed_area_lanes(box, q); });
     }
   }
+}
+
+}  // namespace sample_detail
+
+void sample(const detail::TextureDescription& texture, const SamplerOptions& options,
+            const TextureQuery* queries, std::size_t count, Vec4* out) {
+  using namespace sample_detail;
+  sample_with(texture, options, RecordQueries{queries}, count, RecordResults{out});
+}
+
+void sample_fields(const detail::TextureDescription& texture, const SamplerOptions& options,
+                   const detail::QueryFields& queries, std::size_t count,
+                   const detail::ResultChannels& out) {
+  using namespace sample_detail;
+  sample_with(texture, options, FieldQueries{queries}, count, ChannelResults{out});
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -21,6 +21,7 @@
 #include "../src/shade_batch.hpp"
 #include "interpolation-inl.hpp"
 #include "simd_ops-inl.hpp"
+#include "texture_tile-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
@@ -35,7 +36,8 @@ class ShadingVisitor {
   explicit ShadingVisitor(const detail::ShadeBatch& batch)
       : batch_(batch),
         interpolator_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, 0.0, 0.0),
-        divide_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}) {}
+        divide_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}),
+        textured_(batch.texture_description != nullptr) {}
 
   void begin_triangle(std::uint32_t t) {
     std::size_t corner[3] = {3 * std::size_t{t}, 3 * std::size_t{t} + 1, 3 * std::size_t{t} + 2};
@@ -44,6 +46,7 @@ class ShadingVisitor {
         corner[i] = batch_.coverage.indices[corner[i]];
     }
     Vec2 p[3];
+    Vec2 uv[3]{};
     float z[3];
     ScreenTriangle screen;
     for (int i = 0; i < 3; ++i) {
@@ -54,6 +57,7 @@ class ShadingVisitor {
       screen.w[i] = batch_.clip_w[corner[i]];
       color_[i] = batch_.colors[corner[i]];
       if (batch_.normals != nullptr) normal_[i] = batch_.normals[corner[i]];
+      if (textured_) uv[i] = batch_.uvs[corner[i]];
     }
     depth_ = detail::make_depth_plane(p, z);
     // Interpolation coordinates from a pixel corner near the triangle keep float32 exact.
@@ -70,6 +74,9 @@ class ShadingVisitor {
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
     if (batch_.normals != nullptr) scale_normals();
     if (batch_.shading == Shading::flat) flat_color_ = pack_rgba8(color_[0]);
+    if (textured_)
+      texture_.begin_triangle(detail::make_texture_planes(p, uv, screen.w, batch_.perspective),
+                              batch_.derivatives);
     keep_bounds_ = batch_.tile_max_depth != nullptr && batch_.depth_write;
     reject_hidden_ =
         batch_.tile_max_depth != nullptr && batch_.hierarchical_depth &&
@@ -123,43 +130,113 @@ class ShadingVisitor {
         }
       }
     }
-    for (int row = 0; row < kTileSize; ++row) {
-      const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-      if (row_mask == 0) {
-        if (keep_bounds_) {  // the bound covers every value of the tile
-          for (std::size_t h = 0; h < kParts; ++h) {
-            stored_max = xsimd::max(
-                stored_max, Floats::load_aligned(depth + static_cast<std::size_t>(row) * kTileSize +
-                                                 h * kLanes));
-          }
+    if (textured_) {
+      // Depth first, so that only rows with pixels to write are textured; then colour.
+      Floats writes[kTileSize][kParts];
+      std::uint32_t written_rows = 0;
+      for (int row = 0; row < kTileSize; ++row) {
+        const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
+        if (row_mask == 0) {
+          keep_row_bound(depth, row, stored_max);
+          continue;
         }
-        continue;
+        const Floats row_base(detail::depth_row_base(depth_, py + row));
+        Floats any(0.0f);
+        for (std::size_t h = 0; h < kParts; ++h) {
+          writes[row][h] =
+              depth_step(depth, row, h, row_base, depth_columns[h], row_mask, stored_max);
+          any = any | writes[row][h];
+        }
+        if (xsimd::any(xsimd::bitwise_cast<Ints>(any) != Ints(0))) written_rows |= 1u << row;
       }
-      const Floats row_base(detail::depth_row_base(depth_, py + row));
-      for (std::size_t h = 0; h < kParts; ++h) {
-        const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
-        const Floats z = clamp01(row_base + depth_columns[h]);
-        const Floats stored = Floats::load_aligned(depth + offset);
-        const Floats covered = lane_mask(row_mask >> (h * kLanes));
-        const Floats write = covered & passes(z, stored);
-        if (batch_.depth_write) {
-          const Floats updated = (z & write) | (stored & ~write);
-          updated.store_aligned(depth + offset);
-          stored_max = xsimd::max(stored_max, updated);
+      if (written_rows != 0) {
+        texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
+                             31 - std::countl_zero(written_rows));
+      }
+      for (int row = 0; row < kTileSize; ++row) {
+        if ((written_rows >> row & 1u) == 0) continue;
+        for (std::size_t h = 0; h < kParts; ++h) {
+          Floats channel[4];
+          colour_channels(colour_row_bases, px, py, row, h, channel);
+          for (int k = 0; k < 4; ++k)
+            channel[k] = channel[k] * texture_.texel(k, row, h);
+          write_colour(color, row, h, writes[row][h], pack_rgba8_lanes<Arch>(channel));
         }
-        const Ints write_lanes = xsimd::bitwise_cast<Ints>(write);
-        passed_ = passed_ - write_lanes;  // all-ones lanes are -1
-        const Ints old_color = Ints::load_aligned(reinterpret_cast<std::int32_t*>(color + offset));
-        const Ints new_color = colour_planes_
-                                   ? planar_colour(colour_row_bases, row, h)
-                                   : shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_,
-                                           py + row - origin_y_);
-        ((new_color & write_lanes) | (old_color & ~write_lanes))
-            .store_aligned(reinterpret_cast<std::int32_t*>(color + offset));
+      }
+    } else {
+      for (int row = 0; row < kTileSize; ++row) {
+        const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
+        if (row_mask == 0) {
+          keep_row_bound(depth, row, stored_max);
+          continue;
+        }
+        const Floats row_base(detail::depth_row_base(depth_, py + row));
+        for (std::size_t h = 0; h < kParts; ++h) {
+          const Floats write =
+              depth_step(depth, row, h, row_base, depth_columns[h], row_mask, stored_max);
+          const Ints new_color = colour_planes_
+                                     ? planar_colour(colour_row_bases, row, h)
+                                     : shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_,
+                                             py + row - origin_y_);
+          write_colour(color, row, h, write, new_color);
+        }
       }
     }
     // The tile's largest depth, over all 64 values after the writes: its new bound.
     if (keep_bounds_) batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
+  }
+
+  // A row without covered samples: its stored depths still count towards the tile's bound.
+  [[gnu::always_inline]] void keep_row_bound(const float* depth, int row,
+                                             Floats& stored_max) const {
+    if (!keep_bounds_) return;
+    for (std::size_t h = 0; h < kParts; ++h) {
+      stored_max = xsimd::max(
+          stored_max,
+          Floats::load_aligned(depth + static_cast<std::size_t>(row) * kTileSize + h * kLanes));
+    }
+  }
+
+  // The depth test of lanes h of `row`, the depth written where it passes; returns the lanes
+  // to write (all ones) as a mask.
+  [[gnu::always_inline]] Floats depth_step(float* depth, int row, std::size_t h, Floats row_base,
+                                           Floats depth_column, std::uint32_t row_mask,
+                                           Floats& stored_max) {
+    const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
+    const Floats z = clamp01(row_base + depth_column);
+    const Floats stored = Floats::load_aligned(depth + offset);
+    const Floats covered = lane_mask(row_mask >> (h * kLanes));
+    const Floats write = covered & passes(z, stored);
+    if (batch_.depth_write) {
+      const Floats updated = (z & write) | (stored & ~write);
+      updated.store_aligned(depth + offset);
+      stored_max = xsimd::max(stored_max, updated);
+    }
+    passed_ = passed_ - xsimd::bitwise_cast<Ints>(write);  // all-ones lanes are -1
+    return write;
+  }
+
+  [[gnu::always_inline]] static void write_colour(std::uint32_t* color, int row, std::size_t h,
+                                                  Floats write, Ints new_color) {
+    std::int32_t* at = reinterpret_cast<std::int32_t*>(
+        color + static_cast<std::size_t>(row) * kTileSize + h * kLanes);
+    const Ints write_lanes = xsimd::bitwise_cast<Ints>(write);
+    const Ints old_color = Ints::load_aligned(at);
+    ((new_color & write_lanes) | (old_color & ~write_lanes)).store_aligned(at);
+  }
+
+  // The shaded colour of lanes h of `row`, each channel scaled to 0 .. 255, before packing.
+  [[gnu::always_inline]] void colour_channels(const float (*row_bases)[kTileSize], std::int32_t px,
+                                              std::int32_t py, int row, std::size_t h,
+                                              Floats channel[4]) const {
+    if (colour_planes_) return planar_channels(row_bases, row, h, channel);
+    if (batch_.shading == Shading::flat) {
+      for (int k = 0; k < 4; ++k)
+        channel[k] = Floats(255.0f * (&color_[0].x)[k]);
+      return;
+    }
+    shade_channels(px + static_cast<std::int32_t>(h * kLanes) - origin_x_, py + row - origin_y_,
+                   channel);
   }
 
   void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
@@ -296,6 +373,11 @@ class ShadingVisitor {
   [[gnu::always_inline]] Ints planar_colour(const float (*row_bases)[kTileSize], int row,
                                             std::size_t h) const {
     Floats channel[4];
+    planar_channels(row_bases, row, h, channel);
+    return pack_rgba8_lanes<Arch>(channel);
+  }
+  [[gnu::always_inline]] void planar_channels(const float (*row_bases)[kTileSize], int row,
+                                              std::size_t h, Floats channel[4]) const {
     for (int k = 0; k < 4; ++k)
       channel[k] = Floats(row_bases[k][row]) + colour_columns_[k][h];
     if (perspective_) {
@@ -303,15 +385,20 @@ class ShadingVisitor {
       for (int k = 0; k < 4; ++k)
         channel[k] = channel[k] * w;
     }
-    return pack_rgba8_lanes<Arch>(channel);
   }
 
   // Packed RGBA8 of kLanes pixels from (column, row) relative to the interpolation origin.
   [[gnu::always_inline]] Ints shade(std::int32_t column, std::int32_t row) const {
     if (batch_.shading == Shading::flat) return Ints(static_cast<std::int32_t>(flat_color_));
+    Floats rgba[4];
+    shade_channels(column, row, rgba);
+    return pack_rgba8_lanes<Arch>(rgba);
+  }
+  // Gouraud or diffuse, each channel scaled to 0 .. 255.
+  [[gnu::always_inline]] void shade_channels(std::int32_t column, std::int32_t row,
+                                             Floats rgba[4]) const {
     WeightRow<Arch> w = interpolator_.row(column, row);
     if (perspective_) w = divide_.apply(w);
-    Floats rgba[4];
     const float* c0 = &color_[0].x;
     const float* c1 = &color_[1].x;
     const float* c2 = &color_[2].x;
@@ -336,7 +423,6 @@ class ShadingVisitor {
     }
     for (int k = 0; k < 4; ++k)
       rgba[k] = rgba[k] * Floats(255.0f);
-    return pack_rgba8_lanes<Arch>(rgba);
   }
 
   const detail::ShadeBatch& batch_;
@@ -356,6 +442,8 @@ class ShadingVisitor {
   std::uint64_t tiles_skipped_ = 0;
   bool keep_bounds_ = false, reject_hidden_ = false;
   Ints passed_ = Ints(0);
+  bool textured_ = false;
+  TextureTile<Arch> texture_;
 };
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

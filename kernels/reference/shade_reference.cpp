@@ -1,13 +1,17 @@
 // The shading reference: every candidate pixel of every drawn triangle tested for coverage by the
 // reference rasterizer, depth from the shared formula (so outcomes are the fast paths' exactly),
-// and colour from the double-precision interpolation references.
+// and colour from the double-precision interpolation references; textured, times the
+// double-precision sampling reference at the shared queries (texture_planes.hpp).
+#include <array>
 #include <cmath>
 #include <cstdint>
 
 #include "../src/depth_plane.hpp"
 #include "../src/shade_batch.hpp"
+#include "../src/texture_planes.hpp"
 #include "interpolation_reference.hpp"
 #include "raster_reference.hpp"
+#include "sample_reference.hpp"
 
 namespace edgewise::reference {
 namespace {
@@ -39,14 +43,14 @@ struct Corner {
   double w;
   Vec4 color;
   Vec3 normal;
+  Vec2 uv;
 };
 
-std::uint32_t shade_sample(const detail::ShadeBatch& batch, const Corner c[3], double px,
-                           double py) {
-  if (batch.shading == Shading::flat) {
-    return to_byte(c[0].color.x) | to_byte(c[0].color.y) << 8 | to_byte(c[0].color.z) << 16 |
-           to_byte(c[0].color.w) << 24;
-  }
+// The shaded colour at pixel center (px, py), before any texture.
+std::array<double, 4> shaded_colour(const detail::ShadeBatch& batch, const Corner c[3], double px,
+                                    double py) {
+  if (batch.shading == Shading::flat)
+    return {c[0].color.x, c[0].color.y, c[0].color.z, c[0].color.w};
   ScreenTriangle screen;
   for (int i = 0; i < 3; ++i) {
     screen.x[i] = c[i].position.x;
@@ -54,7 +58,7 @@ std::uint32_t shade_sample(const detail::ShadeBatch& batch, const Corner c[3], d
     screen.w[i] = c[i].w;
   }
   const Weights w = interpolation_weights(batch.method, batch.perspective, screen, px, py);
-  double rgba[4] = {0, 0, 0, 0};
+  std::array<double, 4> rgba = {0, 0, 0, 0};
   for (int i = 0; i < 3; ++i) {
     rgba[0] += w.b[i] * c[i].color.x;
     rgba[1] += w.b[i] * c[i].color.y;
@@ -75,6 +79,10 @@ std::uint32_t shade_sample(const detail::ShadeBatch& batch, const Corner c[3], d
     for (int k = 0; k < 3; ++k)
       rgba[k] *= light;
   }
+  return rgba;
+}
+
+std::uint32_t pack(const std::array<double, 4>& rgba) {
   return to_byte(rgba[0]) | to_byte(rgba[1]) << 8 | to_byte(rgba[2]) << 16 | to_byte(rgba[3]) << 24;
 }
 
@@ -87,12 +95,22 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
     float z[3];
     for (int i = 0; i < 3; ++i) {
       const std::size_t v = batch.coverage.indices ? batch.coverage.indices[3 * t + i] : 3 * t + i;
-      c[i] = {batch.coverage.vertices[v], batch.depth[v], batch.clip_w[v], batch.colors[v],
-              batch.normals ? batch.normals[v] : Vec3{0, 0, 0}};
+      c[i] = {batch.coverage.vertices[v],
+              batch.depth[v],
+              batch.clip_w[v],
+              batch.colors[v],
+              batch.normals ? batch.normals[v] : Vec3{0, 0, 0},
+              batch.uvs ? batch.uvs[v] : Vec2{0, 0}};
       p[i] = c[i].position;
       z[i] = c[i].depth;
     }
     const detail::DepthPlane plane = detail::make_depth_plane(p, z);
+    detail::TexturePlanes texture_planes;
+    if (batch.texture != nullptr) {
+      const Vec2 uv[3] = {c[0].uv, c[1].uv, c[2].uv};
+      const double w[3] = {c[0].w, c[1].w, c[2].w};
+      texture_planes = detail::make_texture_planes(p, uv, w, batch.perspective);
+    }
     const PixelRect box = candidate_pixels(tri, batch.coverage.clip);
     for (std::int32_t py = box.y0; py < box.y1; ++py) {
       for (std::int32_t px = box.x0; px < box.x1; ++px) {
@@ -107,7 +125,15 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
         if (!passes(batch.depth_test, depth, batch.depth_tiles[index])) continue;
         ++counts.passed;
         if (batch.depth_write) batch.depth_tiles[index] = depth;
-        batch.color_tiles[index] = shade_sample(batch, c, px + 0.5, py + 0.5);
+        std::array<double, 4> rgba = shaded_colour(batch, c, px + 0.5, py + 0.5);
+        if (batch.texture != nullptr) {
+          const TextureQuery query =
+              detail::texture_query(texture_planes, batch.derivatives, px, py);
+          const Rgba texel = sample(*batch.texture, batch.sampler, query);
+          for (int k = 0; k < 4; ++k)
+            rgba[k] *= texel[k];
+        }
+        batch.color_tiles[index] = pack(rgba);
       }
     }
   });

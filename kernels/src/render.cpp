@@ -12,6 +12,7 @@
 #include "framebuffer_access.hpp"
 #include "kernel_table.hpp"
 #include "shade_batch.hpp"
+#include "texture_description.hpp"
 
 namespace edgewise {
 namespace {
@@ -23,6 +24,7 @@ struct ScreenMesh {
   std::vector<float> clip_w;
   std::vector<Vec4> colors;
   std::vector<Vec3> normals;
+  std::vector<Vec2> uvs;  // textured draws only
   std::vector<std::uint32_t> indices;
 };
 
@@ -41,6 +43,10 @@ float snap(float v) {
 template <class T>
 T blend(const T& a, const T& b, const T& c, float b0, float b1, float b2);
 template <>
+Vec2 blend(const Vec2& a, const Vec2& b, const Vec2& c, float b0, float b1, float b2) {
+  return {b0 * a.x + b1 * b.x + b2 * c.x, b0 * a.y + b1 * b.y + b2 * c.y};
+}
+template <>
 Vec4 blend(const Vec4& a, const Vec4& b, const Vec4& c, float b0, float b1, float b2) {
   return {b0 * a.x + b1 * b.x + b2 * c.x, b0 * a.y + b1 * b.y + b2 * c.y,
           b0 * a.z + b1 * b.z + b2 * c.z, b0 * a.w + b1 * b.w + b2 * c.w};
@@ -58,7 +64,8 @@ class VertexStage {
       : mesh_(mesh),
         viewport_(viewport),
         planes_(guard_band_planes(viewport)),
-        diffuse_(options.shading == Shading::diffuse) {
+        diffuse_(options.shading == Shading::diffuse),
+        textured_(options.texture.has_value()) {
     clip_.resize(mesh.positions.size());
     kernels.transform_vertices(options.transform, mesh.positions.data(), mesh.positions.size(),
                                clip_.data());
@@ -122,34 +129,39 @@ class VertexStage {
   std::uint32_t mapped(std::uint32_t vertex, ScreenMesh& out) {
     if (screen_index_[vertex] == kUnmapped) {
       screen_index_[vertex] = static_cast<std::uint32_t>(out.positions.size());
-      push(clip_[vertex], color(vertex), normal(vertex), out);
+      push(clip_[vertex], color(vertex), normal(vertex), uv(vertex), out);
     }
     return screen_index_[vertex];
   }
 
   void append(const ClipVertex& v, const std::uint32_t corner[3], ScreenMesh& out) {
     push(v.position, blend(color(corner[0]), color(corner[1]), color(corner[2]), v.b0, v.b1, v.b2),
-         blend(normal(corner[0]), normal(corner[1]), normal(corner[2]), v.b0, v.b1, v.b2), out);
+         blend(normal(corner[0]), normal(corner[1]), normal(corner[2]), v.b0, v.b1, v.b2),
+         blend(uv(corner[0]), uv(corner[1]), uv(corner[2]), v.b0, v.b1, v.b2), out);
   }
 
-  void push(const Vec4& clip, const Vec4& color, const Vec3& normal, ScreenMesh& out) const {
+  void push(const Vec4& clip, const Vec4& color, const Vec3& normal, const Vec2& uv,
+            ScreenMesh& out) const {
     const ScreenVertex s = to_screen(clip, viewport_);
     out.positions.push_back({snap(s.x), snap(s.y)});
     out.depth.push_back(s.z);
     out.clip_w.push_back(clip.w);
     out.colors.push_back(color);
     if (diffuse_) out.normals.push_back(normal);
+    if (textured_) out.uvs.push_back(uv);
   }
 
   Vec4 color(std::uint32_t v) const {
     return mesh_.colors.empty() ? Vec4{1.0f, 1.0f, 1.0f, 1.0f} : mesh_.colors[v];
   }
   Vec3 normal(std::uint32_t v) const { return diffuse_ ? mesh_.normals[v] : Vec3{0, 0, 0}; }
+  Vec2 uv(std::uint32_t v) const { return textured_ ? mesh_.uvs[v] : Vec2{0, 0}; }
 
   const DrawMesh& mesh_;
   Viewport viewport_;
   GuardBandPlanes planes_;
   bool diffuse_;
+  bool textured_;
   std::vector<Vec4> clip_;
   std::vector<ClipClass> class_;  // classify_clip_vertex() per vertex
   std::vector<std::uint32_t> screen_index_;
@@ -167,6 +179,16 @@ void validate(const DrawMesh& mesh, const DrawOptions& options) {
   }
   if (options.shading == Shading::diffuse && mesh.normals.empty()) {
     throw std::invalid_argument("draw: diffuse shading needs normals");
+  }
+  if (options.texture) {
+    if (options.texture->texture == nullptr) {
+      throw std::invalid_argument("draw: the texture option holds no texture");
+    }
+    if (mesh.uvs.size() != n) {
+      throw std::invalid_argument("draw: " + std::to_string(mesh.uvs.size()) + " uvs for " +
+                                  std::to_string(n) + " positions (a texture needs one each)");
+    }
+    detail::validate_sampler(*options.texture->texture, options.texture->sampler, "draw");
   }
   const std::size_t corners = mesh.indices.empty() ? n : mesh.indices.size();
   if (corners % 3 != 0) {
@@ -207,6 +229,7 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
   screen.clip_w.reserve(mesh.positions.size());
   screen.colors.reserve(mesh.positions.size());
   if (options.shading == Shading::diffuse) screen.normals.reserve(mesh.positions.size());
+  if (options.texture) screen.uvs.reserve(mesh.positions.size());
   screen.indices.reserve(3 * report.triangles);
   const detail::KernelTable& kernels = detail::kernel_table(isa);
   VertexStage stage(mesh, options, Viewport{target.width(), target.height()}, kernels);
@@ -227,7 +250,10 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
   }
   const auto mapped = Clock::now();
 
-  const detail::ShadeBatch batch{
+  // The texture flattened for the kernels once per draw (the reference reads the Texture).
+  std::optional<detail::FlatTexture> flat_texture;
+  if (options.texture && isa != Isa::reference) flat_texture.emplace(*options.texture->texture);
+  detail::ShadeBatch batch{
       {screen.positions.data(), screen.positions.size(), screen.indices.data(),
        screen.indices.size() / 3, clip, options.cull, nullptr},
       screen.depth.data(),
@@ -247,6 +273,13 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
       // The reference neither uses nor keeps the bounds: they are rebuilt after it writes depth.
       isa == Isa::reference ? nullptr : detail::FramebufferAccess::tile_max_depth(target),
       options.hierarchical_depth};
+  if (options.texture) {
+    batch.uvs = screen.uvs.data();
+    batch.texture = options.texture->texture;
+    batch.texture_description = flat_texture ? &flat_texture->description() : nullptr;
+    batch.sampler = options.texture->sampler;
+    batch.derivatives = options.texture->derivatives;
+  }
   if (isa == Isa::reference && options.depth_write) {
     detail::FramebufferAccess::invalidate_depth_bounds(target);
   }
@@ -303,6 +336,23 @@ std::string_view shading_name(Shading shading) {
 std::optional<Shading> parse_shading(std::string_view name) {
   for (Shading shading : {Shading::flat, Shading::gouraud, Shading::diffuse}) {
     if (shading_name(shading) == name) return shading;
+  }
+  return std::nullopt;
+}
+
+std::string_view texture_derivatives_name(TextureDerivatives derivatives) {
+  switch (derivatives) {
+    case TextureDerivatives::quad:
+      return "quad";
+    case TextureDerivatives::analytic:
+      return "analytic";
+  }
+  return "unknown";
+}
+
+std::optional<TextureDerivatives> parse_texture_derivatives(std::string_view name) {
+  for (TextureDerivatives d : {TextureDerivatives::quad, TextureDerivatives::analytic}) {
+    if (texture_derivatives_name(d) == name) return d;
   }
   return std::nullopt;
 }

@@ -41,26 +41,50 @@ struct TextureDescription {
   std::int32_t rip_rows = 0;
 };
 
-// out[i] = the filtered linear RGBA at queries[i], for the filters with a vectorized kernel
-// (has_sample_kernel()). One definition per ISA, in kernels/isa/sample_<isa>.cpp.
+// out[i] = the filtered linear RGBA at queries[i]. One definition per ISA, in
+// kernels/isa/sample_<isa>.cpp, with sample_fields(), the same over QueryFields and
+// ResultChannels.
 using SampleKernel = void (*)(const TextureDescription& texture, const SamplerOptions& options,
                               const TextureQuery* queries, std::size_t count, Vec4* out);
+
+// Queries as one array per field and results as one array per channel, for callers that
+// compute queries a batch of lanes at a time (the shading kernels).
+struct QueryFields {
+  const float* s;
+  const float* t;
+  const float* dsdx;
+  const float* dtdx;
+  const float* dsdy;
+  const float* dtdy;
+};
+
+struct ResultChannels {
+  float* c[4];  // R, G, B, A
+};
 
 }  // namespace edgewise::detail
 
 namespace edgewise::isa_sse2 {
 void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
             std::size_t, Vec4*);
-}
+void sample_fields(const detail::TextureDescription&, const SamplerOptions&,
+                   const detail::QueryFields&, std::size_t, const detail::ResultChannels&);
+}  // namespace edgewise::isa_sse2
 namespace edgewise::isa_sse4_1 {
 void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
             std::size_t, Vec4*);
-}
+void sample_fields(const detail::TextureDescription&, const SamplerOptions&,
+                   const detail::QueryFields&, std::size_t, const detail::ResultChannels&);
+}  // namespace edgewise::isa_sse4_1
 namespace edgewise::isa_avx2 {
 void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
             std::size_t, Vec4*);
-}
+void sample_fields(const detail::TextureDescription&, const SamplerOptions&,
+                   const detail::QueryFields&, std::size_t, const detail::ResultChannels&);
+}  // namespace edgewise::isa_avx2
 namespace edgewise::isa_neon {
 void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
             std::size_t, Vec4*);
-}
+void sample_fields(const detail::TextureDescription&, const SamplerOptions&,
+                   const detail::QueryFields&, std::size_t, const detail::ResultChannels&);
+}  // namespace edgewise::isa_neon

@@ -6,6 +6,7 @@
 
 #include "edgewise/render.hpp"
 #include "kernel_table.hpp"
+#include "sample_kernels.hpp"
 
 namespace edgewise::detail {
 
@@ -30,6 +31,12 @@ struct ShadeBatch {
   // test would fail everywhere.
   float* tile_max_depth;
   bool hierarchical_depth;
+  // Texturing (texture_planes.hpp gives the queries); all null without a texture.
+  const Vec2* uvs = nullptr;  // per vertex
+  const Texture* texture = nullptr;
+  const TextureDescription* texture_description = nullptr;  // the texture, flattened
+  SamplerOptions sampler{};
+  TextureDerivatives derivatives = TextureDerivatives::quad;
 };
 
 struct ShadeCounts {

@@ -69,8 +69,8 @@ WeightErrors one_hot_weight_errors(int vertex, Perspective perspective, const Sc
 // plus 4 roundings of the light term, all times the channel's magnitude where it exceeds 1.
 // Codes then differ by the value difference times 255, rounded up, plus one for the rounding
 // of each side.
-int allowed_codes(const VertexAttributes& triangle, const WeightErrors& e, Shading shading,
-                  float ambient) {
+double colour_error(const VertexAttributes& triangle, const WeightErrors& e, Shading shading,
+                    float ambient) {
   double color_error = 0.0, brightest = 0.0;
   for (int k = 0; k < 4; ++k) {
     double err = 0.0, magnitude = 0.0;
@@ -103,7 +103,12 @@ int allowed_codes(const VertexAttributes& triangle, const WeightErrors& e, Shadi
     color_error = color_error +
                   ((1.0 - ambient) * lambert_error + 4.0 * kFloatUnit) * std::max(1.0, brightest);
   }
-  const double codes = std::ceil(255.0 * color_error);
+  return color_error;
+}
+
+int allowed_codes(const VertexAttributes& triangle, const WeightErrors& e, Shading shading,
+                  float ambient) {
+  const double codes = std::ceil(255.0 * colour_error(triangle, e, shading, ambient));
   return codes < 254.0 ? 1 + static_cast<int>(codes) : 255;  // NaN: unbounded
 }
 
@@ -141,8 +146,8 @@ PlaneValue plane_value(const ScreenTriangle& t, const double f[3], double px, do
 
 }  // namespace
 
-int plane_colour_codes(const ScreenTriangle& t, const VertexAttributes& attributes,
-                       Perspective perspective, double px, double py) {
+double plane_colour_error(const ScreenTriangle& t, const VertexAttributes& attributes,
+                          Perspective perspective, double px, double py) {
   bool usable_w = true;
   for (double w : t.w)
     usable_w = usable_w && w >= kMinClipW && w <= kMaxClipW;
@@ -164,12 +169,18 @@ int plane_colour_codes(const ScreenTriangle& t, const VertexAttributes& attribut
     double error = p.error;
     if (divide) {
       // p / q with both off by their bounds, then 1/q and the product each rounded once.
-      if (!(q.value - q.error > 0.0)) return 255;
+      if (!(q.value - q.error > 0.0)) return std::numeric_limits<double>::infinity();
       const double ratio = (std::abs(p.value) + p.error) / (q.value - q.error);
       error = (p.error + ratio * q.error) / (q.value - q.error) + 2.0 * 0x1p-24 * ratio;
     }
     worst = std::max(worst, error);
   }
+  return std::isnan(worst) ? std::numeric_limits<double>::infinity() : worst / 255.0;
+}
+
+int plane_colour_codes(const ScreenTriangle& t, const VertexAttributes& attributes,
+                       Perspective perspective, double px, double py) {
+  const double worst = 255.0 * plane_colour_error(t, attributes, perspective, px, py);
   // The reference's own double error is below 2^-40 of a code here.
   if (!std::isfinite(worst) || worst > 254.0) return 255;
   return 1 + static_cast<int>(std::ceil(worst));

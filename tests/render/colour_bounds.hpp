@@ -41,6 +41,9 @@ struct VertexAttributes {
 // weights on vertex 0 without the perspective step.
 int allowed_codes(const VertexAttributes& triangle, const WeightErrors& e, Shading shading,
                   float ambient);
+// The same bound before rounding to codes: the largest difference of a linear colour channel.
+double colour_error(const VertexAttributes& triangle, const WeightErrors& e, Shading shading,
+                    float ambient);
 
 // Gouraud colour by plane equations (the kernels' fast path for that method and model): each
 // channel, scaled to 0 .. 255, is its own plane, and perspective-correct a plane of value / w
@@ -49,5 +52,8 @@ int allowed_codes(const VertexAttributes& triangle, const WeightErrors& e, Shadi
 // range, which the kernels cannot hold).
 int plane_colour_codes(const ScreenTriangle& triangle, const VertexAttributes& attributes,
                        Perspective perspective, double px, double py);
+// The same bound as a linear channel difference before rounding (infinite where unbounded).
+double plane_colour_error(const ScreenTriangle& triangle, const VertexAttributes& attributes,
+                          Perspective perspective, double px, double py);
 
 }  // namespace edgewise::test

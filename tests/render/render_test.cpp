@@ -15,109 +15,10 @@
 #include "isa_params.hpp"
 #include "random.hpp"
 #include "render/colour_bounds.hpp"
+#include "render/render_scenes.hpp"
 
 namespace edgewise::test {
 namespace {
-
-constexpr float kFov = 1.0f, kNear = 0.5f, kFar = 40.0f;
-
-struct Scene {
-  std::vector<Vec3> positions;
-  std::vector<Vec4> colors;
-  std::vector<Vec3> normals;
-};
-
-Vec3 unit(double x, double y, double z) {
-  const double n = std::sqrt(x * x + y * y + z * z);
-  return {static_cast<float>(x / n), static_cast<float>(y / n), static_cast<float>(z / n)};
-}
-
-// A point in view space inside the frustum: NDC (x, y) and a distance in front of the camera.
-Vec3 frustum_point(double ndc_x, double ndc_y, double distance, double aspect) {
-  const double half = std::tan(kFov / 2.0);
-  return {static_cast<float>(ndc_x * distance * half * aspect),
-          static_cast<float>(ndc_y * distance * half), static_cast<float>(-distance)};
-}
-
-// Random triangles well inside the frustum (none needs clipping), of mixed sizes and depths,
-// with random colours and normals within 60 degrees of a common direction (so the interpolated
-// normal never comes near zero length: |n| >= cos 60 = 1/2).
-Scene random_scene(Random& random, int triangles, double aspect) {
-  Scene scene;
-  for (int t = 0; t < triangles; ++t) {
-    const double size = random.log_uniform(0.02, 0.6);
-    const double cx = random.uniform(-0.6, 0.6), cy = random.uniform(-0.6, 0.6);
-    const double base = random.log_uniform(kNear * 2.0, kFar * 0.5);
-    const Vec3 axis = unit(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(0.5, 1));
-    for (int i = 0; i < 3; ++i) {
-      const double distance = base * random.uniform(0.6, 1.6);
-      scene.positions.push_back(frustum_point(cx + random.uniform(-size, size),
-                                              cy + random.uniform(-size, size), distance, aspect));
-      scene.colors.push_back({static_cast<float>(random.uniform()),
-                              static_cast<float>(random.uniform()),
-                              static_cast<float>(random.uniform()), 1.0f});
-      const double spread = 0.5;  // tan of about 27 degrees per component
-      scene.normals.push_back(unit(axis.x + random.uniform(-spread, spread),
-                                   axis.y + random.uniform(-spread, spread),
-                                   axis.z + random.uniform(-spread, spread)));
-    }
-  }
-  return scene;
-}
-
-DrawMesh mesh_of(const Scene& scene) {
-  return {scene.positions, scene.colors, scene.normals, {}};
-}
-
-struct Rendered {
-  DrawReport report;
-  std::vector<std::uint8_t> rgba;
-  std::vector<float> depth;
-};
-
-Rendered render(Isa isa, const Scene& scene, DrawOptions options, std::int32_t width,
-                std::int32_t height) {
-  Framebuffer target(width, height);
-  target.clear({0.1f, 0.2f, 0.3f, 1.0f}, 1.0f);
-  options.isa = isa;
-  Rendered out;
-  out.report = draw(target, mesh_of(scene), options);
-  out.rgba.resize(static_cast<std::size_t>(width) * height * 4);
-  out.depth.resize(static_cast<std::size_t>(width) * height);
-  target.read_rgba8(out.rgba);
-  target.read_depth(out.depth);
-  return out;
-}
-
-DrawOptions perspective_options(std::int32_t width, std::int32_t height) {
-  DrawOptions options;
-  options.transform = perspective(kFov, static_cast<float>(width) / height, kNear, kFar);
-  return options;
-}
-
-// The screen triangle draw() rasterizes for an unclipped triangle: viewport mapping, then the
-// 1/256 px snap.
-ScreenTriangle screen_triangle(const Scene& scene, std::size_t t, const DrawOptions& options,
-                               const Viewport& viewport) {
-  ScreenTriangle s;
-  for (int i = 0; i < 3; ++i) {
-    const Vec4 clip = transform(options.transform, scene.positions[3 * t + i]);
-    const ScreenVertex v = to_screen(clip, viewport);
-    s.x[i] = std::nearbyint(static_cast<double>(v.x) * 256.0) / 256.0;
-    s.y[i] = std::nearbyint(static_cast<double>(v.y) * 256.0) / 256.0;
-    s.w[i] = clip.w;
-  }
-  return s;
-}
-
-VertexAttributes attributes_of(const Scene& scene, std::size_t t) {
-  VertexAttributes a;
-  for (int i = 0; i < 3; ++i) {
-    a.colors[i] = scene.colors[3 * t + i];
-    a.normals[i] = scene.normals[3 * t + i];
-  }
-  return a;
-}
 
 using Render = IsaTest;
 
@@ -160,10 +61,7 @@ TEST_P(Render, ColoursWithinTheDerivedBound) {
   std::uint64_t pixels = 0;
   int widest = 0;
   for (std::size_t t = 0; t < scene.positions.size() / 3; ++t) {
-    Scene one;
-    one.positions.assign(scene.positions.begin() + 3 * t, scene.positions.begin() + 3 * t + 3);
-    one.colors.assign(scene.colors.begin() + 3 * t, scene.colors.begin() + 3 * t + 3);
-    one.normals.assign(scene.normals.begin() + 3 * t, scene.normals.begin() + 3 * t + 3);
+    const Scene one = triangle_of(scene, t);
     DrawOptions options = perspective_options(width, height);
     const ScreenTriangle tri = screen_triangle(one, 0, options, viewport);
     for (InterpolationMethod method : kInterpolationMethods) {
@@ -216,10 +114,7 @@ TEST_P(Render, NearestVertexTakesAVertexColour) {
   options.interpolation = InterpolationMethod::nearest_vertex;
   options.depth_test = DepthTest::always;
   for (std::size_t t = 0; t < scene.positions.size() / 3; ++t) {
-    Scene one;
-    one.positions.assign(scene.positions.begin() + 3 * t, scene.positions.begin() + 3 * t + 3);
-    one.colors.assign(scene.colors.begin() + 3 * t, scene.colors.begin() + 3 * t + 3);
-    one.normals.assign(scene.normals.begin() + 3 * t, scene.normals.begin() + 3 * t + 3);
+    const Scene one = triangle_of(scene, t);
     const Rendered actual = render(isa(), one, options, width, height);
     std::uint32_t vertex_codes[3];
     for (int i = 0; i < 3; ++i)

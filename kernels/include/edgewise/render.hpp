@@ -8,6 +8,14 @@
 // kernels/src/depth_plane.hpp), so depth-test outcomes are identical on every ISA and in the
 // scalar reference. Colours and normals are interpolated by the chosen method, perspective-
 // correct by default, within the bounds derived in the kernels.
+//
+// Texturing (DrawOptions::texture): texture coordinates are interpolated by plane equations of
+// s/w, t/w and 1/w (of s and t under Perspective::affine), each pixel's (s, t) and derivatives go
+// to the sampler (sampler.hpp) with the chosen filter, and the filtered texel multiplies the
+// shaded colour channel by channel (flat, Gouraud or diffuse, as without a texture). Coordinates
+// and derivatives come from one fixed float32 formula (kernels/src/texture_planes.hpp), so every
+// ISA and the scalar reference sample the texture at the same queries; the texture-coordinate
+// planes do not depend on the interpolation method, which applies to colours and normals.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +28,8 @@
 #include "edgewise/interpolation.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/raster.hpp"
+#include "edgewise/sampler.hpp"
+#include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
 
 namespace edgewise {
@@ -39,12 +49,35 @@ std::optional<DepthTest> parse_depth_test(std::string_view name);
 std::string_view shading_name(Shading shading);
 std::optional<Shading> parse_shading(std::string_view name);
 
+// Where the sampler's screen derivatives (dsdx, dtdx, dsdy, dtdy) come from.
+enum class TextureDerivatives : std::uint8_t {
+  // Differences within 2x2 pixel quads, as GPUs take them: dsdx at (x, y) is
+  // s(x | 1, y) - s(x & ~1, y), dsdy is s(x, y | 1) - s(x, y & ~1) (each pixel's own row and
+  // column of its quad), with s evaluated at every pixel of a quad the triangle touches, covered
+  // or not. Exact for affine mappings up to rounding; a one-pixel secant under perspective.
+  quad,
+  // The exact derivatives of the projective mapping at the pixel centre, from the planes of
+  // s/w, t/w and q = 1/w: ds/dx = (d(s/w)/dx - s dq/dx) / q, and likewise for t and y.
+  analytic,
+};
+
+std::string_view texture_derivatives_name(TextureDerivatives derivatives);
+std::optional<TextureDerivatives> parse_texture_derivatives(std::string_view name);
+
+struct DrawTexture {
+  const Texture* texture = nullptr;  // read during draw() only
+  SamplerOptions sampler;
+  TextureDerivatives derivatives = TextureDerivatives::quad;
+};
+
 // The mesh to draw; spans are read during draw() only.
 struct DrawMesh {
   std::span<const Vec3> positions;
   std::span<const Vec4> colors;            // linear RGBA per vertex; empty: opaque white
   std::span<const Vec3> normals;           // per vertex; needed by Shading::diffuse
   std::span<const std::uint32_t> indices;  // three per triangle; empty: vertices 3t .. 3t + 2
+  std::span<const Vec2> uvs{};             // texture coordinates (s, t) per vertex; needed with
+                                           // a texture, ignored without one
 };
 
 struct DrawOptions {
@@ -57,6 +90,8 @@ struct DrawOptions {
   Perspective perspective = Perspective::correct;
   Vec3 light_direction{0.0f, 0.0f, 1.0f};  // towards the light, in the normals' space
   float ambient = 0.15f;
+  // Multiplies the shaded colour by the filtered texel at each pixel (see the top of this file).
+  std::optional<DrawTexture> texture;
   // Skip 8x8 tiles whose stored depth the triangle cannot pass anywhere (less and less_equal
   // tests), from a per-tile depth bound the framebuffer keeps. Outcomes are the same either way.
   bool hierarchical_depth = true;
@@ -81,8 +116,9 @@ struct DrawReport {
 };
 
 // Throws std::invalid_argument for inconsistent spans (attribute counts, index count not a
-// multiple of 3, diffuse without normals), an inverted scissor or an unsupported ISA. Bad
-// geometry is counted in the report, never drawn.
+// multiple of 3, diffuse without normals, a texture without uvs), a null texture, sampler
+// options sample() refuses, an inverted scissor or an unsupported ISA. Bad geometry is counted
+// in the report, never drawn. Non-finite uvs give the sampler's defined results (sampler.hpp).
 DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
 
 }  // namespace edgewise
