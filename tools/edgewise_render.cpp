@@ -1,6 +1,7 @@
 // edgewise-render: draws an OBJ mesh or a built-in scene with edgewise::draw(), writes the image
 // (PNG or EXR) and prints what the pipeline did: triangles at each stage, fragments, and the time
-// of each stage. --compare-isas checks every ISA against the scalar reference on the same frame.
+// of each stage. --compare-isas checks every ISA against the scalar reference on the same frame;
+// --texture textures the mesh, and --each-filter renders the frame once per texture filter.
 //
 // Timing: the framebuffer and the mesh's spans are set up once; each of the --repeat frames is a
 // clear (timed apart) followed by one draw() call, so the frame time is the draw call alone.
@@ -26,6 +27,7 @@
 #include "render/camera_setup.hpp"
 #include "render/command_line.hpp"
 #include "render/image_writer.hpp"
+#include "render/render_texture.hpp"
 #include "render/usage_error.hpp"
 #include "scene/obj_loader.hpp"
 
@@ -72,8 +74,37 @@ LoadedScene load_scene(const RenderSettings& settings) {
   return {std::move(mesh), std::nullopt, "OBJ " + *settings.obj_path};
 }
 
-DrawMesh draw_mesh_of(const scene::Mesh& mesh) {
-  return {mesh.positions, mesh.colors, mesh.normals, mesh.indices};
+// With a texture, the texels give the colour: the vertex colours are left out (opaque white).
+DrawMesh draw_mesh_of(const scene::Mesh& mesh, bool textured) {
+  DrawMesh draw_mesh;
+  draw_mesh.positions = mesh.positions;
+  draw_mesh.normals = mesh.normals;
+  draw_mesh.indices = mesh.indices;
+  if (textured) {
+    draw_mesh.uvs = mesh.uvs;
+  } else {
+    draw_mesh.colors = mesh.colors;
+  }
+  return draw_mesh;
+}
+
+// The texture, if any, and what the report says about it.
+struct TextureInUse {
+  RenderTexture loaded;
+  const TextureSettings& settings;
+  double load_seconds = 0.0;
+};
+
+// settings.draw with the camera's transform and the texture.
+DrawOptions draw_options(const RenderSettings& settings, const ResolvedCamera& camera,
+                         const TextureInUse* texture) {
+  DrawOptions options = settings.draw;
+  options.transform = camera.transform;
+  if (texture != nullptr) {
+    options.texture = DrawTexture{&texture->loaded.texture, texture->settings.sampler,
+                                  texture->settings.derivatives};
+  }
+  return options;
 }
 
 // The farthest value for the depth test, so that the first surface drawn always passes.
@@ -164,7 +195,7 @@ std::string vector_text(const Vec3& v) {
 }
 
 void print_setup(const LoadedScene& loaded, const RenderSettings& settings,
-                 const ResolvedCamera& camera, std::string_view isas) {
+                 const ResolvedCamera& camera, const TextureInUse* texture, std::string_view isas) {
   const scene::SceneCamera& view = camera.view;
   const DrawOptions& d = settings.draw;
   std::cout << "edgewise-render: " << loaded.description << ", " << settings.width << "x"
@@ -183,6 +214,9 @@ void print_setup(const LoadedScene& loaded, const RenderSettings& settings,
             << perspective_name(d.perspective) << ", depth " << depth_test_name(d.depth_test)
             << (d.depth_write ? " with writes" : " without writes") << ", cull "
             << cull_mode_name(d.cull) << ", light " << vector_text(d.light_direction) << '\n';
+  if (texture != nullptr) {
+    std::cout << "  texture   " << describe_texture(texture->loaded, texture->settings) << '\n';
+  }
 }
 
 void print_counts(const DrawReport& report) {
@@ -199,15 +233,15 @@ void print_counts(const DrawReport& report) {
   print_count("tiles skipped", report.tiles_skipped, "hidden by the per-tile depth bound");
 }
 
-// ---- The two modes ----------------------------------------------------------------------------
+// ---- The three modes: one frame, --compare-isas, --each-filter --------------------------------
 
 int render(const RenderSettings& settings, const LoadedScene& loaded, const DrawMesh& mesh,
-           const ResolvedCamera& camera, double load_seconds, Clock::time_point start) {
-  DrawOptions options = settings.draw;
-  options.transform = camera.transform;
+           const ResolvedCamera& camera, const TextureInUse* texture, double load_seconds,
+           Clock::time_point start) {
+  DrawOptions options = draw_options(settings, camera, texture);
   const Isa isa = options.isa.value_or(active_isa());
   options.isa = isa;
-  print_setup(loaded, settings, camera, "ISA " + std::string(isa_name(isa)));
+  print_setup(loaded, settings, camera, texture, "ISA " + std::string(isa_name(isa)));
 
   Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
   const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
@@ -224,6 +258,7 @@ int render(const RenderSettings& settings, const LoadedScene& loaded, const Draw
                                     : std::string())
             << '\n';
   print_time("load scene", load_seconds);
+  if (texture != nullptr) print_time("load texture", texture->load_seconds, "and its pyramids");
   print_time("clear", times.clear, "not part of the frame");
   print_time("vertex stage", times.vertex, "transform, clipping, screen mapping");
   print_time("raster + shade", times.raster, "setup, coverage, depth, shading");
@@ -264,20 +299,24 @@ Difference compare_images(std::span<const std::uint8_t> rgba, std::span<const fl
   return d;
 }
 
-// A row of the --compare-isas table: the ISA left-aligned, the other columns right-aligned.
-void print_isa_row(const std::array<std::string, 7>& cells) {
-  constexpr int kWidths[] = {11, 11, 11, 18, 20, 17, 8};
-  std::cout << "  " << std::left << std::setw(kWidths[0]) << cells[0] << std::right;
-  for (std::size_t c = 1; c < cells.size(); ++c)
-    std::cout << std::setw(kWidths[c]) << cells[c];
+// A table row: the first cell left-aligned, the others right-aligned, each in its width.
+template <std::size_t N>
+void print_table_row(const std::array<std::string, N>& cells, const std::array<int, N>& widths) {
+  std::cout << "  " << std::left << std::setw(widths[0]) << cells[0] << std::right;
+  for (std::size_t c = 1; c < N; ++c)
+    std::cout << std::setw(widths[c]) << cells[c];
   std::cout << '\n';
 }
 
+// A row of the --compare-isas table.
+void print_isa_row(const std::array<std::string, 7>& cells) {
+  print_table_row(cells, {11, 11, 11, 18, 20, 17, 8});
+}
+
 int compare_isas(const RenderSettings& settings, const LoadedScene& loaded, const DrawMesh& mesh,
-                 const ResolvedCamera& camera) {
-  DrawOptions options = settings.draw;
-  options.transform = camera.transform;
-  print_setup(loaded, settings, camera, "every supported ISA against the reference");
+                 const ResolvedCamera& camera, const TextureInUse* texture) {
+  DrawOptions options = draw_options(settings, camera, texture);
+  print_setup(loaded, settings, camera, texture, "every supported ISA against the reference");
 
   Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
   const std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
@@ -325,6 +364,51 @@ int compare_isas(const RenderSettings& settings, const LoadedScene& loaded, cons
   return ok ? 0 : 1;
 }
 
+// A row of the --each-filter table.
+void print_filter_row(const std::array<std::string, 6>& cells) {
+  print_table_row(cells, {20, 11, 11, 16, 12, 0});
+}
+
+// --each-filter: the frame once per texture filter (--repeat frames each), a row of times each.
+int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded,
+                       const DrawMesh& mesh, const ResolvedCamera& camera,
+                       const TextureInUse& texture) {
+  DrawOptions options = draw_options(settings, camera, &texture);
+  const Isa isa = options.isa.value_or(active_isa());
+  options.isa = isa;
+  print_setup(loaded, settings, camera, &texture, "ISA " + std::string(isa_name(isa)));
+
+  Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
+  std::cout << "each filter"
+            << (settings.repeat > 1 ? " (median of " + std::to_string(settings.repeat) + " frames)"
+                                    : std::string())
+            << '\n';
+  print_filter_row({"filter", "frame", "fastest", "raster + shade", "fragments", "  image"});
+  DrawReport report;
+  for (TextureFilter filter : kEveryTextureFilter) {
+    options.texture->sampler.filter = filter;
+    const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
+    // Appended rather than concatenated: g++ 12 warns falsely (-Wrestrict) on "-" + string.
+    std::string image = "  ";
+    if (settings.output) {
+      std::string suffix = "-";
+      suffix += texture_filter_name(filter);
+      const std::string path = path_with_suffix(*settings.output, suffix);
+      write_image(path, framebuffer);
+      image += path;
+    } else {
+      image += '-';
+    }
+    print_filter_row({std::string(texture_filter_name(filter)), milliseconds(times.frame),
+                      milliseconds(times.fastest_frame), milliseconds(times.raster),
+                      std::to_string(times.report.fragments), image});
+    report = times.report;
+  }
+  // The filter changes colours only: every frame counted the same as this last one.
+  print_counts(report);
+  return 0;
+}
+
 int run(std::span<char* const> args) {
   const RenderSettings settings = parse_command_line(args);
   if (settings.help) {
@@ -341,9 +425,23 @@ int run(std::span<char* const> args) {
   const ResolvedCamera camera =
       resolve_camera(settings.camera, loaded.camera, *bounds,
                      static_cast<float>(settings.width) / static_cast<float>(settings.height));
-  const DrawMesh mesh = draw_mesh_of(loaded.mesh);
-  return settings.compare_isas ? compare_isas(settings, loaded, mesh, camera)
-                               : render(settings, loaded, mesh, camera, load_seconds, start);
+  std::optional<TextureInUse> texture;
+  if (settings.texture) {
+    if (loaded.mesh.uvs.empty()) {
+      throw std::runtime_error(loaded.description +
+                               " has no texture coordinates (vt lines); --texture needs them");
+    }
+    const auto texture_start = Clock::now();
+    texture.emplace(load_render_texture(*settings.texture), *settings.texture);
+    texture->load_seconds = seconds_since(texture_start);
+  }
+  const TextureInUse* in_use = texture ? &*texture : nullptr;
+  const DrawMesh mesh = draw_mesh_of(loaded.mesh, in_use != nullptr);
+  if (settings.compare_isas) return compare_isas(settings, loaded, mesh, camera, in_use);
+  if (in_use != nullptr && in_use->settings.each_filter) {
+    return render_each_filter(settings, loaded, mesh, camera, *in_use);
+  }
+  return render(settings, loaded, mesh, camera, in_use, load_seconds, start);
 }
 
 }  // namespace
@@ -353,6 +451,10 @@ int main(int argc, char** argv) {
     return run(std::span<char* const>(argv + 1, argv + argc));
   } catch (const UsageError& e) {
     std::cerr << "edgewise-render: " << e.what() << " (edgewise-render --help for usage)\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    // A large texture file with ripmaps and a summed-area table, for one.
+    std::cerr << "edgewise-render: not enough memory\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "edgewise-render: " << e.what() << '\n';

@@ -22,13 +22,14 @@
 #include "edgewise/texture.hpp"
 #include "sample/command_line.hpp"
 #include "sample/record_files.hpp"
-#include "sample/texture_loader.hpp"
 #include "sample/usage_error.hpp"
+#include "texture_io/texture_loader.hpp"
 
 namespace {
 
 using namespace edgewise;
 using namespace edgewise::sample_tool;
+using namespace edgewise::texture_io;
 using Clock = std::chrono::steady_clock;
 
 // Queries per call of sample(): 24 MiB of queries and 16 MiB of results in memory at a time,

@@ -11,6 +11,7 @@
 #include "edgewise/raster.hpp"
 #include "render/builtin_scenes.hpp"
 #include "render/image_writer.hpp"
+#include "render/render_texture.hpp"
 #include "render/usage_error.hpp"
 
 namespace edgewise::render_tool {
@@ -38,6 +39,29 @@ const std::string_view kUsage =
     "  --cull none|cw|ccw     winding on screen to remove (default cw: the back faces)\n"
     "  --light X,Y,Z          direction towards the light, world space (0,0,0: ambient only)\n"
     "  --isa NAME | --reference   default: the best ISA of this CPU (or EDGEWISE_ISA)\n"
+    "Texture (the options after --texture need it):\n"
+    "  --texture FILE|checker texture the mesh: an image file (read through OpenImageIO as\n"
+    "                         edgewise-sample reads it) or the built-in checkerboard (1024x1024\n"
+    "                         texels, 8x8 squares). The mesh's uvs address it (an OBJ file needs\n"
+    "                         vt lines) and its vertex colours become white: the texture gives\n"
+    "                         the colour, which shading (flat, gouraud, diffuse) still scales\n"
+    "  --filter NAME          nearest, bilinear, bicubic_catmull_rom, bicubic_bspline,\n"
+    "                         mip_nearest, trilinear (default), supersample, ripmap, summed_area,\n"
+    "                         anisotropic, ewa (ripmaps and the summed-area table are built only\n"
+    "                         for their filter)\n"
+    "  --each-filter          one run per filter in the order above (--repeat frames each) and a\n"
+    "                         table of their times; -o FILE.png writes FILE-<filter>.png\n"
+    "  --wrap W               repeat (default), clamp or mirror, on both axes\n"
+    "  --lod exact|max_axis   level-of-detail formula (default exact)\n"
+    "  --lod-bias F           added to log2 of the footprint (default 0)\n"
+    "  --max-aniso N          anisotropic probes, EWA eccentricity: 1..64 (default 16)\n"
+    "  --taps N               supersample: N x N taps, 1..16 (default 4)\n"
+    "  --pyramid box|lanczos3 how coarser levels are made (default box)\n"
+    "  --srgb                 R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
+    "                         others when loaded; alpha is linear\n"
+    "  --derivatives quad|analytic   the sampler's screen derivatives of (s, t): differences in\n"
+    "                         2x2 pixel quads, as GPUs take them (default), or exact, from the\n"
+    "                         plane equations\n"
     "Running:\n"
     "  --repeat N             draw N times into the same framebuffer, report median times\n"
     "  -o FILE                write FILE.png (RGBA8) or FILE.exr (float R, G, B, A and the\n"
@@ -136,15 +160,56 @@ std::optional<CullMode> parse_cull_mode(std::string_view name) {
   return std::nullopt;
 }
 
-int parse_repeat(std::string_view text) {
+int parse_int_in(std::string_view option, std::string_view text, int lo, int hi) {
   int value = 0;
   const char* last = text.data() + text.size();
   const auto [end, ec] = std::from_chars(text.data(), last, value);
-  if (ec != std::errc() || end != last || value < 1 || value > kMaxRepeat) {
-    throw UsageError("--repeat " + quoted(text) + " is not an integer in 1.." +
-                     std::to_string(kMaxRepeat));
+  if (ec != std::errc() || end != last || value < lo || value > hi) {
+    throw UsageError(std::string(option) + " " + quoted(text) + " is not an integer in " +
+                     std::to_string(lo) + ".." + std::to_string(hi));
   }
   return value;
+}
+
+// "nearest, bilinear, ... or ewa", from the filters themselves.
+std::string texture_filter_list() {
+  std::string names;
+  for (std::size_t i = 0; i < std::size(kEveryTextureFilter); ++i) {
+    if (i > 0) names += i + 1 == std::size(kEveryTextureFilter) ? " or " : ", ";
+    names += texture_filter_name(kEveryTextureFilter[i]);
+  }
+  return names;
+}
+
+// Parses the texture option `arg` into `texture`; false when `arg` is no texture option.
+template <class Value>
+bool parse_texture_option(std::string_view arg, Value value, TextureSettings& texture) {
+  SamplerOptions& sampler = texture.sampler;
+  if (arg == "--filter") {
+    sampler.filter = parse_named(arg, value(), parse_texture_filter, texture_filter_list());
+  } else if (arg == "--each-filter") {
+    texture.each_filter = true;
+  } else if (arg == "--wrap") {
+    sampler.wrap_s = sampler.wrap_t =
+        parse_named(arg, value(), parse_wrap_mode, "repeat, clamp or mirror");
+  } else if (arg == "--lod") {
+    sampler.lod = parse_named(arg, value(), parse_lod_formula, "exact or max_axis");
+  } else if (arg == "--lod-bias") {
+    sampler.lod_bias = parse_number(arg, value());
+  } else if (arg == "--max-aniso") {
+    sampler.max_anisotropy = parse_int_in(arg, value(), 1, kMaxAnisotropyLimit);
+  } else if (arg == "--taps") {
+    sampler.supersample_taps = parse_int_in(arg, value(), 1, kMaxSupersampleTaps);
+  } else if (arg == "--pyramid") {
+    texture.pyramid = parse_named(arg, value(), parse_pyramid_filter, "box or lanczos3");
+  } else if (arg == "--srgb") {
+    texture.srgb = true;
+  } else if (arg == "--derivatives") {
+    texture.derivatives = parse_named(arg, value(), parse_texture_derivatives, "quad or analytic");
+  } else {
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -164,6 +229,11 @@ std::string_view cull_mode_name(CullMode mode) {
 RenderSettings parse_command_line(std::span<char* const> args) {
   RenderSettings settings;
   bool scene_given = false, isa_given = false;
+  // Texture options may come before --texture; they are checked against it at the end.
+  TextureSettings texture;
+  std::optional<std::string> texture_source;
+  std::string first_texture_option;
+  bool filter_given = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string_view arg = args[i];
     const auto value = [&]() -> std::string_view {
@@ -230,8 +300,14 @@ RenderSettings parse_command_line(std::span<char* const> args) {
       set_isa(parse_isa_option(value()));
     } else if (arg == "--reference") {
       set_isa(Isa::reference);
+    } else if (arg == "--texture") {
+      texture_source = std::string(value());
+      if (texture_source->empty()) throw UsageError("--texture needs a file name or checker");
+    } else if (parse_texture_option(arg, value, texture)) {
+      if (first_texture_option.empty()) first_texture_option = arg;
+      filter_given = filter_given || arg == "--filter";
     } else if (arg == "--repeat") {
-      settings.repeat = parse_repeat(value());
+      settings.repeat = parse_int_in(arg, value(), 1, kMaxRepeat);
     } else if (arg == "-o") {
       const std::string_view path = value();
       image_format_for(path);  // refuse an unknown extension before any work
@@ -245,9 +321,20 @@ RenderSettings parse_command_line(std::span<char* const> args) {
     }
   }
   if (settings.obj_path && scene_given) throw UsageError("give either --obj or --scene, not both");
-  if (settings.compare_isas && (isa_given || settings.output)) {
-    throw UsageError("--compare-isas takes no --isa, --reference or -o");
+  if (settings.compare_isas && (isa_given || settings.output || texture.each_filter)) {
+    throw UsageError("--compare-isas takes no --isa, --reference, -o or --each-filter");
   }
+  if (!texture_source) {
+    if (!first_texture_option.empty()) {
+      throw UsageError(first_texture_option + " needs --texture FILE|checker");
+    }
+    return settings;
+  }
+  if (texture.each_filter && filter_given) {
+    throw UsageError("--each-filter renders every filter; give no --filter");
+  }
+  texture.source = std::move(*texture_source);
+  settings.texture = std::move(texture);
   return settings;
 }
 

@@ -9,6 +9,8 @@
 #include <string_view>
 
 #include "edgewise/render.hpp"
+#include "edgewise/sampler.hpp"
+#include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
 
 namespace edgewise::render_tool {
@@ -34,12 +36,27 @@ inline constexpr CullMode kBackFaceCull = CullMode::clockwise;
 // of the built-in scenes' cameras.
 inline constexpr Vec3 kDefaultLight{-0.45f, 0.8f, 0.55f};
 
+// --texture's value that names the built-in checkerboard rather than a file (a file of that name
+// is given as ./checker).
+inline constexpr std::string_view kCheckerTexture = "checker";
+
+// --texture and the options that only mean something with it.
+struct TextureSettings {
+  std::string source;      // an image file, or kCheckerTexture
+  SamplerOptions sampler;  // --filter (default trilinear), --wrap, --lod, --lod-bias, ...
+  TextureDerivatives derivatives = TextureDerivatives::quad;  // --derivatives
+  PyramidFilter pyramid = PyramidFilter::box;                 // --pyramid
+  bool srgb = false;                                          // --srgb
+  bool each_filter = false;  // --each-filter: one frame per TextureFilter
+};
+
 struct RenderSettings {
   std::optional<std::string> obj_path;  // --obj; otherwise the built-in scene below
   std::string scene_name = "default";   // --scene
   CameraOverrides camera;
   std::int32_t width = 1280, height = 720;
-  // Everything but the transform, which the camera gives.
+  std::optional<TextureSettings> texture;  // --texture
+  // Everything but the transform, which the camera gives, and the texture, loaded after parsing.
   DrawOptions draw = [] {
     DrawOptions options;
     options.shading = Shading::diffuse;

@@ -14,11 +14,18 @@
 namespace edgewise::render_tool {
 namespace {
 
-std::string lower_case_extension(std::string_view path) {
+// Where the extension starts in `path` (at its last '.' after the last '/'); path.size() if none.
+std::size_t extension_start(std::string_view path) {
   const std::size_t slash = path.find_last_of('/');
-  const std::string_view name = slash == std::string_view::npos ? path : path.substr(slash + 1);
-  const std::size_t dot = name.find_last_of('.');
-  std::string extension(dot == std::string_view::npos ? std::string_view() : name.substr(dot));
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) {
+    return path.size();
+  }
+  return dot;
+}
+
+std::string lower_case_extension(std::string_view path) {
+  std::string extension(path.substr(extension_start(path)));
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return extension;
@@ -67,6 +74,11 @@ EncodedImage encode_exr(const Framebuffer& framebuffer) {
 }
 
 }  // namespace
+
+std::string path_with_suffix(std::string_view path, std::string_view suffix) {
+  const std::size_t dot = extension_start(path);
+  return std::string(path.substr(0, dot)) + std::string(suffix) + std::string(path.substr(dot));
+}
 
 ImageFormat image_format_for(std::string_view path) {
   const std::string extension = lower_case_extension(path);

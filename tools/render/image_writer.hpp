@@ -17,6 +17,9 @@ enum class ImageFormat { png, exr };
 // By the file's extension, in any letter case. Throws UsageError for any other extension.
 ImageFormat image_format_for(std::string_view path);
 
+// `path` with `suffix` inserted before its extension: ("out/a.png", "-ewa") gives "out/a-ewa.png".
+std::string path_with_suffix(std::string_view path, std::string_view suffix);
+
 // Throws std::runtime_error("PATH: reason") when the file cannot be written.
 void write_image(const std::string& path, const Framebuffer& framebuffer);
 

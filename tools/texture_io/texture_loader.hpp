@@ -1,4 +1,5 @@
-// Reading an image file into an edgewise::Texture through OpenImageIO.
+// Reading an image file into an edgewise::Texture through OpenImageIO (edgewise-sample and
+// edgewise-render load their textures alike).
 //
 // 8-bit images become RGBA8 textures (sRGB-encoded when asked, linear otherwise); every other
 // pixel type is read as float (OpenImageIO maps 16-bit v to v / 65535) into an RGBA float
@@ -11,7 +12,7 @@
 
 #include "edgewise/texture.hpp"
 
-namespace edgewise::sample_tool {
+namespace edgewise::texture_io {
 
 struct LoadedTexture {
   Texture texture;
@@ -23,4 +24,4 @@ struct LoadedTexture {
 // or is larger than a Texture may be.
 LoadedTexture load_texture(const std::string& path, bool srgb, const TextureBuild& build);
 
-}  // namespace edgewise::sample_tool
+}  // namespace edgewise::texture_io

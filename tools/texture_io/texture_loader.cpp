@@ -1,10 +1,11 @@
-#include "sample/texture_loader.hpp"
+#include "texture_io/texture_loader.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstring>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -12,9 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "sample/file_error.hpp"
-
-namespace edgewise::sample_tool {
+namespace edgewise::texture_io {
 namespace {
 
 // Texture::from_rgba8 / from_rgba32f refuse larger sides (texture.hpp).
@@ -30,8 +29,10 @@ constexpr int kMaxTextureSide = 1 << 15;
 // OpenImageIO's own message for a missing file names no cause; the system's does.
 void require_readable_file(const std::string& path) {
   struct stat status {};
-  if (::stat(path.c_str(), &status) != 0) throw file_error(path, "cannot open", errno);
-  if (S_ISDIR(status.st_mode)) throw file_error(path, "cannot open", EISDIR);
+  const int error = ::stat(path.c_str(), &status) != 0 ? errno
+                    : S_ISDIR(status.st_mode)          ? EISDIR
+                                                       : 0;
+  if (error != 0) fail(path, std::string("cannot open: ") + std::strerror(error));
 }
 
 // Channel c of the RGBA texel made from one pixel's `channels` values, in the file's type T;
@@ -107,4 +108,4 @@ LoadedTexture load_texture(const std::string& path, bool srgb, const TextureBuil
   return loaded;
 }
 
-}  // namespace edgewise::sample_tool
+}  // namespace edgewise::texture_io
