@@ -17,4 +17,7 @@ void register_shading_benchmarks();
 // SamplePeer/oiio/<mode>/<stream> (OpenImageIO's TextureSystem) when it is built in.
 void register_sample_benchmarks();
 
+// TexturedDraw/<isa>/<filter>/<derivatives>: the ground-plane view drawn textured.
+void register_textured_draw_benchmarks();
+
 }  // namespace edgewise::bench

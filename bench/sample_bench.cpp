@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_texture.hpp"
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
 #include "texture_scene/builtin_views.hpp"
@@ -33,29 +34,12 @@
 namespace edgewise::bench {
 namespace {
 
-constexpr std::int32_t kTextureSize = 1024;
-constexpr std::int32_t kSquares = 64;
 constexpr std::size_t kReferenceShare = 64;
 
 enum class Stream { ground_plane, magnification };
 
 const char* stream_name(Stream stream) {
   return stream == Stream::ground_plane ? "ground_plane" : "magnification";
-}
-
-const texture_scene::LinearImage& checkerboard() {
-  static const texture_scene::LinearImage image =
-      texture_scene::checkerboard(kTextureSize, kSquares);
-  return image;
-}
-
-const Texture& texture() {
-  static const Texture texture = [] {
-    const std::vector<std::uint8_t> texels = texture_scene::to_rgba8(checkerboard());
-    return Texture::from_rgba8(kTextureSize, kTextureSize, texels, ColorEncoding::linear,
-                               TextureBuild{PyramidFilter::box, true, true});
-  }();
-  return texture;
 }
 
 const std::vector<TextureQuery>& queries(Stream stream) {
@@ -67,7 +51,7 @@ const std::vector<TextureQuery>& queries(Stream stream) {
 }
 
 void sample_stream(benchmark::State& state, Isa isa, TextureFilter filter, Stream stream) {
-  const Texture& t = texture();
+  const Texture& t = checkerboard_texture();
   std::span<const TextureQuery> q = queries(stream);
   if (isa == Isa::reference) q = q.first(q.size() / kReferenceShare);
   std::vector<Vec4> out(q.size());

@@ -1,0 +1,88 @@
+// Textured drawing throughput through draw(): the sampling benchmarks' ground-plane view drawn as
+// geometry (texture_scene::view_mesh(): two screen-filling triangles whose perspective-correct
+// interpolation is the view's mapping) at 1920 x 1080 with the same 1024 x 1024 checkerboard,
+// for every filter and both derivative methods. With analytic derivatives the sampler sees the
+// same queries as Sample/<isa>/<filter>/ground_plane (up to float rounding), so the two rates
+// side by side show what drawing adds to sampling: coverage, depth, the texture coordinates and
+// derivatives, the colour write.
+//
+// TexturedDraw/<isa>/<filter>/<derivatives>. One iteration is one draw() call (white flat
+// shading, depth test less; the framebuffer cleared with the timer paused); items are pixels.
+// AVX2 (or NEON) runs every filter with both methods; the other ISAs bilinear, trilinear and
+// anisotropic with quad derivatives; the reference bilinear and trilinear on a quarter of the
+// screen (its scissor), as it takes about a second per full frame.
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <string>
+
+#include "bench_texture.hpp"
+#include "benchmarks.hpp"
+#include "edgewise/edgewise.hpp"
+#include "texture_scene/builtin_views.hpp"
+#include "texture_scene/view_mesh.hpp"
+
+namespace edgewise::bench {
+namespace {
+
+const texture_scene::ViewMesh& ground_plane_mesh() {
+  static const texture_scene::ViewMesh mesh =
+      texture_scene::view_mesh(texture_scene::ground_plane_view(kWidth, kHeight));
+  return mesh;
+}
+
+void textured_draw(benchmark::State& state, Isa isa, TextureFilter filter,
+                   TextureDerivatives derivatives) {
+  const texture_scene::ViewMesh& mesh = ground_plane_mesh();
+  DrawOptions options;
+  options.transform = mesh.transform;
+  options.shading = Shading::flat;
+  options.isa = isa;
+  options.texture = DrawTexture{&checkerboard_texture(), {}, derivatives};
+  options.texture->sampler.filter = filter;
+  std::uint64_t pixels = static_cast<std::uint64_t>(kWidth) * kHeight;
+  if (isa == Isa::reference) {
+    options.scissor = PixelRect{0, 0, kWidth / 2, kHeight / 2};
+    pixels /= 4;
+  }
+  Framebuffer target(kWidth, kHeight);
+  for (auto _ : state) {
+    state.PauseTiming();
+    target.clear({0.0f, 0.0f, 0.0f, 0.0f}, 1.0f);
+    state.ResumeTiming();
+    const DrawReport report = draw(target, mesh.mesh(), options);
+    if (report.fragments_passed != pixels) {
+      state.SkipWithError("the view did not cover every pixel exactly once");
+      return;
+    }
+    benchmark::DoNotOptimize(target.color_tiles());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
+                          static_cast<std::int64_t>(pixels));
+}
+
+}  // namespace
+
+void register_textured_draw_benchmarks() {
+  for (Isa isa : supported_isas()) {
+    for (int f = 0; f <= static_cast<int>(TextureFilter::ewa); ++f) {
+      const auto filter = static_cast<TextureFilter>(f);
+      for (TextureDerivatives derivatives :
+           {TextureDerivatives::quad, TextureDerivatives::analytic}) {
+        const bool widest = isa == Isa::avx2 || isa == Isa::neon;
+        const bool common = filter == TextureFilter::bilinear ||
+                            filter == TextureFilter::trilinear ||
+                            (filter == TextureFilter::anisotropic && isa != Isa::reference);
+        if (!widest && !(common && derivatives == TextureDerivatives::quad)) continue;
+        const std::string name = "TexturedDraw/" + std::string(isa_name(isa)) + "/" +
+                                 std::string(texture_filter_name(filter)) + "/" +
+                                 std::string(texture_derivatives_name(derivatives));
+        benchmark::RegisterBenchmark(name.c_str(), textured_draw, isa, filter, derivatives)
+            ->Unit(benchmark::kMillisecond);
+      }
+    }
+  }
+}
+
+}  // namespace edgewise::bench
