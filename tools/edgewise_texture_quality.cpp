@@ -4,8 +4,9 @@
 // and marks the Pareto front. tools/plot_texture_quality.py charts its CSV.
 //
 // Timing: the median over --repeat runs of one sample() call over the whole screen (one thread),
-// the peer's lookups timed the same way. These are this tool's figures, for placing the methods
-// against each other; the benchmark suite gives the official throughput.
+// the peer's lookups timed the same way; with --draw, of one clear and draw() of the view's mesh.
+// These are this tool's figures, for placing the methods against each other; the benchmark suite
+// gives the official throughput.
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -15,9 +16,11 @@
 #include <vector>
 
 #include "edgewise/isa.hpp"
+#include "edgewise/render.hpp"
 #include "edgewise/sampler.hpp"
 #include "edgewise/texture.hpp"
 #include "texture_quality/command_line.hpp"
+#include "texture_quality/drawn_view.hpp"
 #include "texture_quality/filter_methods.hpp"
 #include "texture_quality/ground_truth_store.hpp"
 #include "texture_quality/median_time.hpp"
@@ -91,10 +94,11 @@ std::string isa_list(std::span<const Isa> isas) {
   return text;
 }
 
-// Every method on every ISA, then the peer's modes, each timed over the whole screen.
+// Every method on every ISA (sampled, and drawn when `drawn` is given), then the peer's modes,
+// each timed over the whole screen.
 std::vector<ScoreRow> score_scene(const SceneRun& scene, const Texture& texture, OiioPeer* peer,
-                                  std::span<const Isa> isas, std::span<const FilterMethod> methods,
-                                  int repetitions) {
+                                  DrawnView* drawn, std::span<const Isa> isas,
+                                  std::span<const FilterMethod> methods, int repetitions) {
   std::vector<Vec4> colours(scene.queries.size());
   std::vector<ScoreRow> rows;
   for (Isa isa : isas) {
@@ -102,6 +106,18 @@ std::vector<ScoreRow> score_scene(const SceneRun& scene, const Texture& texture,
       const double seconds = median_seconds(
           repetitions, [&] { sample(texture, method.options, scene.queries, colours, isa); });
       rows.push_back(scene.score(method.name, isa_name(isa), colours, seconds));
+    }
+    if (drawn == nullptr) continue;
+    for (TextureDerivatives derivatives :
+         {TextureDerivatives::quad, TextureDerivatives::analytic}) {
+      for (const FilterMethod& method : methods) {
+        const double seconds = median_seconds(
+            repetitions, [&] { drawn->draw(texture, method.options, derivatives, isa); });
+        drawn->read(colours);
+        const std::string name =
+            "draw_" + std::string(texture_derivatives_name(derivatives)) + "_" + method.name;
+        rows.push_back(scene.score(name, isa_name(isa), colours, seconds));
+      }
     }
   }
   if (peer != nullptr) {
@@ -187,8 +203,11 @@ int run(std::span<char* const> args) {
       scene.queries = view.queries();
       if (images) write_srgb_png(scene.image_path("ground_truth"), scene.truth);
 
+      std::optional<DrawnView> drawn;
+      if (settings.draw) drawn.emplace(view);
       std::vector<ScoreRow> rows =
-          score_scene(scene, texture, peer ? &*peer : nullptr, isas, methods, settings.repetitions);
+          score_scene(scene, texture, peer ? &*peer : nullptr, drawn ? &*drawn : nullptr, isas,
+                      methods, settings.repetitions);
       mark_pareto_front(rows);
       print_score_table(std::cout, rows);
       all_rows.insert(all_rows.end(), rows.begin(), rows.end());

@@ -32,6 +32,10 @@ const std::string_view kUsage =
     "                         EDGEWISE_ISA)\n"
     "  --reference            the scalar double-precision reference (with or without --isa)\n"
     "  --no-peer              leave OpenImageIO's TextureSystem out\n"
+    "  --draw                 also draw each view with draw() (its mesh textured with each\n"
+    "                         method, white flat shading) with derivatives from 2x2 quads and\n"
+    "                         from the planes: methods draw_quad_<name>, draw_analytic_<name>;\n"
+    "                         8-bit framebuffer, so errors include its rounding (59 dB alone)\n"
     "  --repeat N             timed runs per method, the median kept: 1..1000 (default 5)\n"
     "\n"
     "Times are this tool's: sample() over the whole screen in one call, one thread. The\n"
@@ -153,6 +157,8 @@ QualitySettings parse_command_line(std::span<char* const> args) {
       add_isa(Isa::reference);
     } else if (arg == "--no-peer") {
       settings.peer = false;
+    } else if (arg == "--draw") {
+      settings.draw = true;
     } else if (arg == "--repeat") {
       settings.repetitions = parse_int_in(arg, value(), 1, kMaxRepetitions);
     } else if (arg == "--cache") {

@@ -30,11 +30,12 @@ struct QualitySettings {
   std::int32_t texture_size = 1024;        // --texture-size
   std::vector<SceneTexture> textures{std::begin(kSceneTextures), std::end(kSceneTextures)};
   std::vector<SceneView> views{std::begin(kSceneViews), std::end(kSceneViews)};
-  PyramidFilter pyramid = PyramidFilter::box;   // --pyramid
-  int max_anisotropy = 16;                      // --max-aniso
-  std::vector<Isa> isas;                        // --isa (repeatable), --reference; empty: active
-  bool peer = true;                             // --no-peer turns OpenImageIO's peer off
-  int repetitions = 5;                          // --repeat: timed runs per method, median kept
+  PyramidFilter pyramid = PyramidFilter::box;  // --pyramid
+  int max_anisotropy = 16;                     // --max-aniso
+  std::vector<Isa> isas;                       // --isa (repeatable), --reference; empty: active
+  bool peer = true;                            // --no-peer turns OpenImageIO's peer off
+  bool draw = false;    // --draw: every method also drawn by draw(), quad and analytic derivatives
+  int repetitions = 5;  // --repeat: timed runs per method, median kept
   std::optional<std::string> cache_directory;   // --cache; otherwise default_cache_directory()
   std::optional<std::string> csv_path;          // --csv
   std::optional<std::string> images_directory;  // --images
