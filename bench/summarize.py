@@ -9,7 +9,9 @@ the scalar reference, and the comparison with published peer figures and with th
 - ShadingMethod/*: fragments/s per interpolation method and perspective mode, relative to the
   production method (plane equations, perspective-correct);
 - Sample/*, SamplePeer/*: texture samples/s per filter, ISA and query stream, beside
-  OpenImageIO's TextureSystem, against the sampling targets (AVX2, one core, ground plane).
+  OpenImageIO's TextureSystem, against the sampling targets (AVX2, one core, ground plane);
+- TexturedDraw/*: textured pixels/s of draw() on the same ground-plane view per filter, ISA and
+  derivative method, beside sample()'s rate on the view's queries.
 
 Usage: /usr/bin/python3 bench/summarize.py FILE.json [FILE.json ...]
   e.g. bench/results/<cpu-model>/coverage.json bench/results/<cpu-model>/shading.json
@@ -51,6 +53,8 @@ PLAIN_DEPTH_NAME = re.compile(r"^ShadingWithoutTileDepth/(?P<isa>[a-z0-9_]+)/are
 METHOD_NAME = re.compile(r"^ShadingMethod/(?P<isa>[a-z0-9_]+)/(?P<method>[a-z_]+)/"
                          r"(?P<perspective>[a-z]+)/area:(?P<area>\d+)(/min_time:[0-9.]+)?$")
 SAMPLE_NAME = re.compile(r"^Sample/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<stream>[a-z_]+)$")
+DRAW_NAME = re.compile(
+    r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<derivatives>[a-z]+)$")
 PEER_NAME = re.compile(r"^SamplePeer/oiio/(?P<mode>[a-z0-9_]+)/(?P<stream>[a-z_]+)$")
 ISA_ORDER = ["reference", "sse2", "sse4_1", "avx2", "neon"]
 METHOD_ORDER = ["nearest_vertex", "inverse_distance", "subtriangle_areas", "edge_functions",
@@ -305,6 +309,34 @@ def print_sampling(samples, peers):
           "anisotropic 16 (as bench/sample_bench.cpp sets them)")
 
 
+def print_textured_draw(draws, samples):
+    """Pixels/s of textured draw() per filter, ISA and derivative method, beside sample()."""
+    print("textured drawing, the ground-plane view drawn by draw() (1920x1080, 1024^2 RGBA8 "
+          "checkerboard, white flat shading), pixels/s")
+    columns = [(isa, d) for isa in ISA_ORDER for d in ("quad", "analytic")
+               if any(k[1] == isa and k[2] == d for k in draws)]
+    header = ["filter"] + [f"{isa} {d}" for isa, d in columns] + ["sample() avx2",
+                                                                    "avx2 analytic / sample()"]
+    rows = []
+    for name in SAMPLE_FILTERS:
+        if not any(k[0] == name for k in draws):
+            continue
+        row = [name]
+        for isa, d in columns:
+            entry = draws.get((name, isa, d))
+            row.append("-" if entry is None else
+                       "ERROR: " + entry["error"] if "error" in entry else
+                       si(entry["items_per_second"], "/s"))
+        sampled = samples.get((name, "ground_plane", "avx2"), {}).get("items_per_second")
+        drawn = draws.get((name, "avx2", "analytic"), {}).get("items_per_second")
+        row.append(si(sampled, "/s") if sampled else "-")
+        row.append(f"{drawn / sampled:.2f}x" if sampled and drawn else "-")
+        rows.append(row)
+    print_table(header, rows)
+    print("the reference draws a quarter of the screen (its scissor); draw() includes coverage, "
+          "depth, texture coordinates, derivatives and the colour write")
+
+
 def main(argv):
     if len(argv) < 2:
         print(__doc__.strip(), file=sys.stderr)
@@ -328,16 +360,19 @@ def main(argv):
                       lambda m: (int(m["area"]), m["method"], m["perspective"], m["isa"]))
     samples = collect(results, SAMPLE_NAME, lambda m: (m["filter"], m["stream"], m["isa"]))
     peers = collect(results, PEER_NAME, lambda m: (m["mode"], m["stream"]))
+    draws = collect(results, DRAW_NAME, lambda m: (m["filter"], m["isa"], m["derivatives"]))
     clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
-    if not (coverage or shading or methods or samples):
-        print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/*, ShadingMethod/* or Sample/* "
+    if not (coverage or shading or methods or samples or draws):
+        print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/*, ShadingMethod/*, Sample/* or "
+              "TexturedDraw/* "
               "benchmarks", file=sys.stderr)
         return 1
 
     for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
                                        (print_shading, shading, (shading, plain_depth)),
                                        (print_methods, methods, (methods,)),
-                                       (print_sampling, samples, (samples, peers))):
+                                       (print_sampling, samples, (samples, peers)),
+                                       (print_textured_draw, draws, (draws, samples))):
         if found:
             print()
             title_printer(*args)
