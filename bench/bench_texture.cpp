@@ -1,7 +1,12 @@
 #include "bench_texture.hpp"
 
+#include <map>
+#include <optional>
+#include <stdexcept>
 #include <vector>
 
+#include "texture_scene/ground_truth_cache.hpp"
+#include "texture_scene/image_metrics.hpp"
 #include "texture_scene/procedural_textures.hpp"
 
 namespace edgewise::bench {
@@ -19,6 +24,40 @@ const Texture& checkerboard_texture() {
                                TextureBuild{PyramidFilter::box, true, true});
   }();
   return texture;
+}
+
+namespace {
+
+std::optional<texture_scene::LinearImage> stored_ground_truth(
+    const std::string& view_name, const texture_scene::TextureView& view) {
+  const std::uint64_t fingerprint = texture_scene::ground_truth_fingerprint(
+      checkerboard(), WrapMode::repeat, WrapMode::repeat, view, view.screen(), {});
+  const std::string name = "checkerboard" + std::to_string(kTextureSize) + "_" + view_name + "_" +
+                           std::to_string(view.width()) + "x" + std::to_string(view.height());
+  try {
+    const std::filesystem::path file = texture_scene::ground_truth_file(
+        texture_scene::default_cache_directory(), name, fingerprint);
+    std::optional<texture_scene::GroundTruth> truth =
+        texture_scene::read_ground_truth(file, fingerprint);
+    if (truth) return std::move(truth->image);
+  } catch (const std::runtime_error&) {  // no cache directory
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void report_error(benchmark::State& state, const std::string& view_name,
+                  const texture_scene::TextureView& view, std::span<const Vec4> colours) {
+  static std::map<std::string, std::optional<texture_scene::LinearImage>> truths;
+  auto it = truths.find(view_name);
+  if (it == truths.end())
+    it = truths.emplace(view_name, stored_ground_truth(view_name, view)).first;
+  if (!it->second) return;
+  const texture_scene::ImageError error = texture_scene::compare_images(
+      texture_scene::image_from_samples(view.width(), view.height(), colours), *it->second);
+  state.counters["rmse"] = error.rmse;
+  state.counters["psnr_db"] = error.psnr;
 }
 
 }  // namespace edgewise::bench

@@ -4,9 +4,15 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
+#include <string>
+
+#include <benchmark/benchmark.h>
 
 #include "edgewise/texture.hpp"
+#include "edgewise/vector.hpp"
 #include "texture_scene/linear_image.hpp"
+#include "texture_scene/texture_view.hpp"
 
 namespace edgewise::bench {
 
@@ -15,5 +21,13 @@ inline constexpr std::int32_t kSquares = 64;
 
 const texture_scene::LinearImage& checkerboard();
 const Texture& checkerboard_texture();
+
+// Error beside speed: when edgewise-texture-quality has stored the ground truth of the
+// checkerboard seen through `view` (named `view_name`, its file in the default cache directory;
+// computing it takes minutes, too long for a benchmark run), sets the counter "rmse" (linear
+// R, G, B, as that tool scores) of `colours`, one per pixel of the view, and "psnr_db".
+// Otherwise sets neither.
+void report_error(benchmark::State& state, const std::string& view_name,
+                  const texture_scene::TextureView& view, std::span<const Vec4> colours);
 
 }  // namespace edgewise::bench

@@ -1,7 +1,5 @@
 #include "texture_quality/ground_truth_store.hpp"
 
-#include <cstdio>
-#include <cstdlib>
 #include <iomanip>
 #include <optional>
 #include <stdexcept>
@@ -9,26 +7,6 @@
 #include "texture_scene/ground_truth_cache.hpp"
 
 namespace edgewise::texture_quality {
-namespace {
-
-std::string hex(std::uint64_t value) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-  return text;
-}
-
-}  // namespace
-
-std::filesystem::path default_cache_directory() {
-  for (const char* variable : {"XDG_CACHE_HOME", "HOME"}) {
-    const char* value = std::getenv(variable);
-    if (value == nullptr || value[0] != '/') continue;  // the XDG spec ignores relative paths
-    const std::filesystem::path base(value);
-    return variable[0] == 'X' ? base / "edgewise" : base / ".cache" / "edgewise";
-  }
-  throw std::runtime_error("no cache directory: set XDG_CACHE_HOME or HOME, or give --cache DIR");
-}
-
 StoredGroundTruth load_or_compute_ground_truth(const std::filesystem::path& directory,
                                                const std::string& name,
                                                const texture_scene::LinearImage& texture,
@@ -39,7 +17,7 @@ StoredGroundTruth load_or_compute_ground_truth(const std::filesystem::path& dire
   const std::uint64_t fingerprint = texture_scene::ground_truth_fingerprint(
       texture, WrapMode::repeat, WrapMode::repeat, view, region, options);
   StoredGroundTruth stored;
-  stored.file = directory / (name + "_" + hex(fingerprint) + ".ewgt");
+  stored.file = texture_scene::ground_truth_file(directory, name, fingerprint);
 
   const auto describe = [&log](const texture_scene::GroundTruthReport& report) {
     log << std::fixed << std::setprecision(2) << report.seconds << " s, " << std::scientific

@@ -9,14 +9,13 @@
 #include <string>
 
 #include "texture_scene/ground_truth.hpp"
+#include "texture_scene/ground_truth_cache.hpp"
 #include "texture_scene/linear_image.hpp"
 #include "texture_scene/texture_view.hpp"
 
 namespace edgewise::texture_quality {
 
-// $XDG_CACHE_HOME/edgewise when XDG_CACHE_HOME is set and absolute, else $HOME/.cache/edgewise.
-// Throws std::runtime_error when neither is usable.
-std::filesystem::path default_cache_directory();
+using texture_scene::default_cache_directory;
 
 struct StoredGroundTruth {
   texture_scene::GroundTruth truth;

@@ -1,6 +1,8 @@
 #include "texture_scene/ground_truth_cache.hpp"
 
 #include <bit>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -180,6 +182,23 @@ GroundTruth cached_ground_truth(const std::filesystem::path& path, const LinearI
   GroundTruth truth = ground_truth(texture, wrap_s, wrap_t, view, region, options);
   write_ground_truth(path, truth, fingerprint);
   return truth;
+}
+
+std::filesystem::path default_cache_directory() {
+  for (const char* variable : {"XDG_CACHE_HOME", "HOME"}) {
+    const char* value = std::getenv(variable);
+    if (value == nullptr || value[0] != '/') continue;  // the XDG spec ignores relative paths
+    const std::filesystem::path base(value);
+    return variable[0] == 'X' ? base / "edgewise" : base / ".cache" / "edgewise";
+  }
+  throw std::runtime_error("no cache directory: set XDG_CACHE_HOME or HOME, or give --cache DIR");
+}
+
+std::filesystem::path ground_truth_file(const std::filesystem::path& directory,
+                                        const std::string& name, std::uint64_t fingerprint) {
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fingerprint));
+  return directory / (name + "_" + hex + ".ewgt");
 }
 
 }  // namespace edgewise::texture_scene

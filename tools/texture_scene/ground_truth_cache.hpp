@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "texture_scene/ground_truth.hpp"
 
@@ -33,6 +34,14 @@ void write_ground_truth(const std::filesystem::path& path, const GroundTruth& tr
 // the caller should compute it again.
 std::optional<GroundTruth> read_ground_truth(const std::filesystem::path& path,
                                              std::uint64_t fingerprint);
+
+// Where ground truths are kept: $XDG_CACHE_HOME/edgewise when XDG_CACHE_HOME is set and
+// absolute, else $HOME/.cache/edgewise. Throws std::runtime_error when neither is usable.
+std::filesystem::path default_cache_directory();
+
+// The file of a ground truth in `directory`: "<name>_<fingerprint as 16 hex digits>.ewgt".
+std::filesystem::path ground_truth_file(const std::filesystem::path& directory,
+                                        const std::string& name, std::uint64_t fingerprint);
 
 // read_ground_truth if it succeeds; otherwise ground_truth() then write_ground_truth.
 GroundTruth cached_ground_truth(const std::filesystem::path& path, const LinearImage& texture,
