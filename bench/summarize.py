@@ -268,6 +268,13 @@ def print_methods(methods):
           "triangle; affine skips the perspective divide")
 
 
+def psnr_cell(entry):
+    """The PSNR against ground truth a benchmark reported (when the ground truth was stored)."""
+    if not entry or "error" in entry or "psnr_db" not in entry:
+        return "-"
+    return f"{entry['psnr_db']:.1f} dB"
+
+
 def print_sampling(samples, peers):
     """Samples/s per filter and ISA for each stream, the peer's rate and the targets."""
     isas = [isa for isa in ISA_ORDER if any(k[2] == isa for k in samples)]
@@ -276,7 +283,8 @@ def print_sampling(samples, peers):
             continue
         print(f"texture sampling, {stream} stream (1920x1080 queries, 1024^2 RGBA8 checkerboard),"
               " samples/s")
-        header = ["filter"] + isas + ["avx2 / reference", "OpenImageIO", "avx2 / OIIO", "target"]
+        header = ["filter"] + isas + ["avx2 / reference", "OpenImageIO", "avx2 / OIIO", "target",
+                                      "PSNR avx2", "PSNR OIIO"]
         rows = []
         for name in SAMPLE_FILTERS:
             row = [name]
@@ -301,6 +309,8 @@ def print_sampling(samples, peers):
                 row.append(f"{si(target, '/s')} ({fast / target:.2f}x, {verdict})")
             else:
                 row.append("-")
+            row.append(psnr_cell(samples.get((name, stream, "avx2"))))
+            row.append(psnr_cell(peer))
             rows.append(row)
         print_table(header, rows)
         print()
@@ -315,8 +325,8 @@ def print_textured_draw(draws, samples):
           "checkerboard, white flat shading), pixels/s")
     columns = [(isa, d) for isa in ISA_ORDER for d in ("quad", "analytic")
                if any(k[1] == isa and k[2] == d for k in draws)]
-    header = ["filter"] + [f"{isa} {d}" for isa, d in columns] + ["sample() avx2",
-                                                                    "avx2 analytic / sample()"]
+    header = ["filter"] + [f"{isa} {d}" for isa, d in columns] + [
+        "sample() avx2", "avx2 analytic / sample()", "PSNR avx2 quad", "PSNR avx2 analytic"]
     rows = []
     for name in SAMPLE_FILTERS:
         if not any(k[0] == name for k in draws):
@@ -331,6 +341,8 @@ def print_textured_draw(draws, samples):
         drawn = draws.get((name, "avx2", "analytic"), {}).get("items_per_second")
         row.append(si(sampled, "/s") if sampled else "-")
         row.append(f"{drawn / sampled:.2f}x" if sampled and drawn else "-")
+        row.append(psnr_cell(draws.get((name, "avx2", "quad"))))
+        row.append(psnr_cell(draws.get((name, "avx2", "analytic"))))
         rows.append(row)
     print_table(header, rows)
     print("the reference draws a quarter of the screen (its scissor); draw() includes coverage, "
