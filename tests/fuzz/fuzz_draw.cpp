@@ -1,7 +1,8 @@
 // Differential fuzz target for draw(): the input bytes become a small mesh (positions, colours,
-// normals, indices), a transform, a target, a scissor and the draw options. Every supported ISA
-// and the shading reference draw it into identically cleared framebuffers, first the whole mesh,
-// then each triangle on its own. A finding prints the decoded input and every ISA's output, then
+// normals, indices), a transform, a target, a scissor and the draw options, and optionally a
+// texture with its sampler options and per-vertex texture coordinates. Every supported ISA and the
+// shading reference draw it into identically cleared framebuffers, first the whole mesh, then
+// each triangle on its own. A finding prints the decoded input and every ISA's output, then
 // aborts, when:
 // - an ISA throws where the reference does not, or anything but the documented
 //   std::invalid_argument (whose cases the input decoder predicts) escapes draw();
@@ -10,7 +11,12 @@
 // - anything outside the scissor, outside the target (the tile padding) or outside every
 //   triangle changes from the clear values, on any ISA or the reference;
 // - (one triangle per draw, so that each pixel's writer is known) a colour differs from the
-//   reference's by more than tests/render/colour_bounds.hpp allows for that pixel.
+//   reference's by more than tests/render/colour_bounds.hpp allows for that pixel;
+// - (textured, one triangle per draw) a colour, the reference's included, lies outside the bound
+//   of tests/render/textured_bounds.hpp: the pixel's query recomputed by the kernels' formula
+//   (kernels/src/texture_planes.hpp) from the writer's snapped corners, its untextured colour
+//   from the reference's draw of the same triangle without the texture (whose depth must equal
+//   the textured draw's), nothing checked where the untextured colour bound is unbounded.
 //
 // Input layout (missing bytes read as zero):
 //   u8 width, u8 height          target size, each modulo kMaxTargetSide + 1 (0 is empty)
@@ -27,6 +33,24 @@
 //               3 x i8 normal (v / 32); u8 extra: >= 240 replaces component extra % 7 of the
 //               colour (0-3) or normal (4-6) with a number
 //   indexed: one u8 per corner, modulo (vertex count + 2), so some indices are past the end
+// Then, optionally (an input that ends here, or whose next byte is even, draws untextured):
+//   u8 texture                   bit 0 textured; bits 1-2 % 3 rgba8 linear, rgba8 sRGB, rgba32f;
+//                                3 analytic derivatives (else quad); 4 Lanczos-3 pyramid (else
+//                                box); 5 texels at random palette entries (else cycling through
+//                                it); 6 LodFormula::max_axis; 7 one texture coordinate short
+//   u8 width, u8 height          1 + v % kMaxTextureSide
+//   u8 palette size, entries     1 + v % kMaxPalette entries of 4 x u8: the 8-bit codes, or for
+//                                float texels 2^scale (4 v / 255 - 1), in 2^scale [-1, 3]
+//   u32 seed, u8 float scale     of the random layout (tests/random.hpp); scale v % 21 - 10
+//   u8 filter % 11, u8 wrap      wrap_s v % 3, wrap_t v / 3 % 3 (WrapMode's order)
+//   i8 lod bias (v / 64), u8 max anisotropy (1 + v % 64), u8 supersample taps (1 + v % 16)
+//   u8 variant                   < 247: ripmaps and a summed-area table built. 247: no texture
+//                                (null pointer); 248: no ripmaps; 249: no summed-area table;
+//                                250, 251: max_anisotropy 0, 65; 252, 253: supersample_taps 0,
+//                                17; 254, 255: lod_bias inf, NaN
+//   per vertex: 2 numbers        the texture coordinates (s, t)
+// Texels are finite and within float texels' 2^10 [-1, 3], as tests/texture/sample_bounds.hpp
+// assumes; coordinates take any number, NaN and infinities included.
 // A number is a u8 tag: < 192 an i16 / 4096 (+-8 in 1/4096 steps), < 192 + 40 an entry of
 // kSpecialValues (zeros, +-1, the clip range's ends, the guard band, float's extremes, NaN,
 // infinities), else raw float bits from a u32.
@@ -45,6 +69,7 @@
 #include <exception>
 #include <initializer_list>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -54,9 +79,14 @@
 #include "edgewise/clip.hpp"
 #include "edgewise/edgewise.hpp"
 #include "edgewise/render.hpp"
+#include "edgewise/sampler.hpp"
+#include "edgewise/texture.hpp"
+#include "random.hpp"
 #include "reference/interpolation_reference.hpp"
 #include "render/colour_bounds.hpp"
+#include "render/textured_bounds.hpp"
 #include "seed_files.hpp"
+#include "src/texture_planes.hpp"
 
 namespace {
 
@@ -70,6 +100,11 @@ using test::WeightErrors;
 constexpr std::int32_t kMaxTargetSide = 72;
 constexpr std::size_t kMaxTriangles = 6;
 constexpr std::size_t kMaxVertices = 3 * kMaxTriangles;
+// Textures cross the sampling kernels' batch sizes and the pyramids' odd sides; a small palette
+// lets the input choose the texel values without paying for every texel.
+constexpr std::int32_t kMaxTextureSide = 64;
+constexpr std::uint32_t kMaxPalette = 8;
+constexpr int kFilterCount = static_cast<int>(TextureFilter::ewa) + 1;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -116,6 +151,19 @@ class FuzzInput {
   std::size_t pos_ = 0;
 };
 
+// The optional texture block of an input, decoded.
+struct TextureInput {
+  TexelFormat format = TexelFormat::rgba8;
+  ColorEncoding encoding = ColorEncoding::linear;
+  std::int32_t width = 1, height = 1;
+  TextureBuild build{PyramidFilter::box, true, true};
+  std::vector<std::array<std::uint8_t, 4>> palette;
+  bool random_layout = false;
+  std::uint32_t seed = 0;
+  int scale_exponent = 0;  // float texels lie in 2^scale_exponent [-1, 3]
+  std::uint32_t variant = 0;
+};
+
 // Everything one input decodes to.
 struct Case {
   std::int32_t width = 0, height = 0;
@@ -123,7 +171,10 @@ struct Case {
   std::vector<Vec4> colors;
   std::vector<Vec3> normals;
   std::vector<std::uint32_t> indices;
+  std::vector<Vec2> uvs;  // textured inputs only
   bool indexed = false;
+  std::optional<TextureInput> texture_input;
+  std::shared_ptr<const Texture> texture;  // options.texture points to it (copies share it)
   DrawOptions options;
   Vec4 clear_color{};
   float clear_depth = 1.0f;
@@ -131,7 +182,7 @@ struct Case {
   std::string part = "the whole mesh";  // or one of its triangles, drawn alone
   bool expect_invalid = false;          // draw() documents std::invalid_argument for this input
 
-  DrawMesh mesh() const { return {positions, colors, normals, indices}; }
+  DrawMesh mesh() const { return {positions, colors, normals, indices, uvs}; }
   std::size_t triangle_count() const { return (indexed ? indices.size() : positions.size()) / 3; }
 };
 
@@ -180,6 +231,97 @@ Mat4 decode_transform(FuzzInput& in, std::int32_t width, std::int32_t height, co
       return m;
     }
   }
+}
+
+// Level 0 from the palette: texel (x, y) is entry (x + y width) % n, or a random entry.
+std::shared_ptr<const Texture> make_texture(const TextureInput& t) {
+  test::Random random(t.seed);
+  const std::size_t n = t.palette.size();
+  const std::size_t count = static_cast<std::size_t>(t.width) * static_cast<std::size_t>(t.height);
+  std::vector<std::uint8_t> codes;
+  codes.reserve(4 * count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t entry =
+        t.random_layout ? static_cast<std::size_t>(random.integer(0, std::int64_t(n) - 1)) : i % n;
+    codes.insert(codes.end(), t.palette[entry].begin(), t.palette[entry].end());
+  }
+  if (t.format == TexelFormat::rgba8) {
+    return std::make_shared<const Texture>(
+        Texture::from_rgba8(t.width, t.height, codes, t.encoding, t.build));
+  }
+  std::vector<float> texels(codes.size());
+  for (std::size_t i = 0; i < codes.size(); ++i)
+    texels[i] = static_cast<float>(std::ldexp(4.0 * codes[i] / 255.0 - 1.0, t.scale_exponent));
+  return std::make_shared<const Texture>(Texture::from_rgba32f(t.width, t.height, texels, t.build));
+}
+
+// The texture block (see the header); returns whether its options make draw() throw.
+bool decode_texture(FuzzInput& in, Case& c) {
+  const std::uint32_t flags = in.u8();
+  if ((flags & 1) == 0) return false;
+  TextureInput t;
+  const std::uint32_t format = (flags >> 1 & 3) % 3;
+  t.format = format == 2 ? TexelFormat::rgba32f : TexelFormat::rgba8;
+  t.encoding = format == 1 ? ColorEncoding::srgb : ColorEncoding::linear;
+  DrawTexture& d = c.options.texture.emplace();
+  d.derivatives = (flags & 8) != 0 ? TextureDerivatives::analytic : TextureDerivatives::quad;
+  t.build.filter = (flags & 16) != 0 ? PyramidFilter::lanczos3 : PyramidFilter::box;
+  t.random_layout = (flags & 32) != 0;
+  SamplerOptions& o = d.sampler;
+  o.lod = (flags & 64) != 0 ? LodFormula::max_axis : LodFormula::exact;
+  const bool uv_short = (flags & 128) != 0;
+  t.width = 1 + static_cast<std::int32_t>(in.u8() % kMaxTextureSide);
+  t.height = 1 + static_cast<std::int32_t>(in.u8() % kMaxTextureSide);
+  t.palette.resize(1 + in.u8() % kMaxPalette);
+  for (auto& entry : t.palette) {
+    for (std::uint8_t& v : entry)
+      v = static_cast<std::uint8_t>(in.u8());
+  }
+  t.seed = in.u32();
+  t.scale_exponent = static_cast<int>(in.u8() % 21) - 10;
+  o.filter = static_cast<TextureFilter>(in.u8() % kFilterCount);
+  const std::uint32_t wrap = in.u8();
+  o.wrap_s = static_cast<WrapMode>(wrap % 3);
+  o.wrap_t = static_cast<WrapMode>(wrap / 3 % 3);
+  o.lod_bias = static_cast<float>(in.i8()) / 64.0f;
+  o.max_anisotropy = 1 + static_cast<int>(in.u8() % kMaxAnisotropyLimit);
+  o.supersample_taps = 1 + static_cast<int>(in.u8() % kMaxSupersampleTaps);
+  t.variant = in.u8();
+  t.build.ripmaps = t.variant != 248;
+  t.build.summed_area_table = t.variant != 249;
+  switch (t.variant) {
+    case 250:
+      o.max_anisotropy = 0;
+      break;
+    case 251:
+      o.max_anisotropy = kMaxAnisotropyLimit + 1;
+      break;
+    case 252:
+      o.supersample_taps = 0;
+      break;
+    case 253:
+      o.supersample_taps = kMaxSupersampleTaps + 1;
+      break;
+    case 254:
+      o.lod_bias = kInf;
+      break;
+    case 255:
+      o.lod_bias = kNaN;
+      break;
+    default:
+      break;
+  }
+  for (std::size_t v = 0; v < c.positions.size(); ++v)
+    c.uvs.push_back({in.number(), in.number()});
+  if (uv_short && !c.uvs.empty()) c.uvs.pop_back();
+  if (t.variant != 247) c.texture = make_texture(t);
+  d.texture = c.texture.get();
+  c.texture_input = std::move(t);
+  // The cases render.hpp documents as std::invalid_argument (sampler.hpp's among them).
+  return c.uvs.size() != c.positions.size() || d.texture == nullptr ||
+         c.texture_input->variant >= 250 ||
+         (o.filter == TextureFilter::ripmap && !c.texture_input->build.ripmaps) ||
+         (o.filter == TextureFilter::summed_area && !c.texture_input->build.summed_area_table);
 }
 
 Case decode(std::span<const std::uint8_t> bytes) {
@@ -247,12 +389,13 @@ Case decode(std::span<const std::uint8_t> bytes) {
   if ((attributes & 1) != 0) c.colors.clear();
   if ((attributes & 2) != 0) c.normals.clear();
   if (color_short && !c.colors.empty()) c.colors.pop_back();
+  const bool bad_texture = decode_texture(in, c);
 
   // The cases render.hpp documents as std::invalid_argument.
   const std::size_t n = c.positions.size();
   const std::size_t corners = c.indexed ? c.indices.size() : n;
   c.expect_invalid =
-      (!c.colors.empty() && c.colors.size() != n) ||
+      bad_texture || (!c.colors.empty() && c.colors.size() != n) ||
       (!c.normals.empty() && c.normals.size() != n) ||
       (o.shading == Shading::diffuse && c.normals.empty()) || corners % 3 != 0 ||
       (o.scissor && (o.scissor->x0 > o.scissor->x1 || o.scissor->y0 > o.scissor->y1));
@@ -260,8 +403,9 @@ Case decode(std::span<const std::uint8_t> bytes) {
 }
 
 // Seed inputs: scenes in the layout above that draw something, so that fuzzing starts from
-// covered pixels rather than from empty meshes. Written by LLVMFuzzerInitialize into the
-// directory EDGEWISE_FUZZ_SEEDS names (tools/check passes its corpus).
+// covered pixels rather than from empty meshes, and textured with every filter. Written by
+// LLVMFuzzerInitialize into the directory EDGEWISE_FUZZ_SEEDS names (tools/check passes its
+// corpus).
 class InputWriter {
  public:
   InputWriter& u8(std::uint32_t v) {
@@ -322,6 +466,21 @@ InputWriter seed_header(const SeedHeader& h) {
   w.u8(10).u8(20).u8(30).u8(255).u8(38);  // clear colour, ambient 0.15
   w.i8(16).i8(24).i8(48);                 // light direction
   return w;
+}
+
+// A texture block: `flags` as decoded (bit 0 set), a four-colour palette, everything built.
+void seed_texture(InputWriter& w, std::uint32_t flags, std::int32_t width, std::int32_t height,
+                  TextureFilter filter, std::initializer_list<Vec2> uvs) {
+  w.u8(flags | 1)
+      .u8(static_cast<std::uint32_t>(width - 1))
+      .u8(static_cast<std::uint32_t>(height - 1));
+  w.u8(3).u8(250).u8(40).u8(40).u8(255).u8(40).u8(220).u8(60).u8(255);
+  w.u8(20).u8(30).u8(240).u8(128).u8(235).u8(235).u8(235).u8(0);
+  w.u8(7).u8(0).u8(0).u8(0).u8(12);  // seed, float scale 2^2
+  w.u8(static_cast<std::uint32_t>(filter)).u8(static_cast<std::uint32_t>(filter) % 9);
+  w.u8(0).u8(15).u8(3).u8(0);  // bias 0, max_anisotropy 16, 4 x 4 taps, everything built
+  for (const Vec2& uv : uvs)
+    w.numbers({uv.x, uv.y});
 }
 
 std::vector<std::vector<std::uint8_t>> seed_inputs() {
@@ -391,6 +550,33 @@ std::vector<std::vector<std::uint8_t>> seed_inputs() {
     w.vertex({1, 0.5f, 0.3f}, 16, 240, 16, facing).vertex({0, 0.001f, 0.9f}, 16, 16, 240, facing);
     seeds.push_back(w.bytes);
   }
+  // A perspective camera over a ground plane and a triangle through the near plane, textured
+  // with each filter in turn: every format, both derivative methods, random and cycling texels.
+  for (int f = 0; f < kFilterCount; ++f) {
+    InputWriter w = seed_header({64, 48, kNoCull, DepthTest::less,
+                                 f % 3 == 0 ? Shading::flat : Shading::gouraud,
+                                 InterpolationMethod::plane_equations});
+    w.u8(2).u8(85).numbers({0.5f, 40.0f, 0, 0, 0, 0, 0, 0, 0}).u8(6).u8(0);
+    w.vertex({-20, -1, -0.25f}, 239, 239, 239, {0, 1, 0})
+        .vertex({20, -1, -0.25f}, 239, 239, 239, {0, 1, 0});
+    w.vertex({0, -1, -60}, 200, 239, 150, tilted).vertex({-1, -0.5f, -0.1f}, 240, 16, 16, tilted);
+    w.vertex({1, -0.25f, -5}, 16, 240, 16, facing).vertex({0, 1, -3}, 16, 16, 240, tilted);
+    const std::uint32_t flags =
+        static_cast<std::uint32_t>(f % 3) << 1 | (f % 2 == 1 ? 8u : 0u) | (f % 4 == 2 ? 32u : 0u);
+    seed_texture(w, flags, 37 + f, 29 - f, static_cast<TextureFilter>(f),
+                 {{-3, 0}, {4, 0}, {0.5f, 7.5f}, {0, 0}, {1, 0.25f}, {0.5f, 1}});
+    seeds.push_back(w.bytes);
+  }
+  {  // an orthographic view in pixels: a textured quad, about one texel per pixel
+    InputWriter w = seed_header({24, 18, kNoCull | kIndexed, DepthTest::less, Shading::gouraud,
+                                 InterpolationMethod::edge_functions});
+    w.u8(3).numbers({0, 24, 18, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0}).u8(4).u8(2);
+    w.vertex({0, 0, -0.5f}, 239, 239, 239, facing).vertex({24, 0, -0.5f}, 200, 239, 239, facing);
+    w.vertex({24, 18, -0.5f}, 239, 200, 239, facing).vertex({0, 18, -0.5f}, 239, 239, 200, facing);
+    w.u8(0).u8(1).u8(2).u8(0).u8(2).u8(3);
+    seed_texture(w, 32, 24, 18, TextureFilter::nearest, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+    seeds.push_back(w.bytes);
+  }
   return seeds;
 }
 
@@ -399,6 +585,37 @@ void print_vec(const char* name, const float* v, int n) {
   for (int k = 0; k < n; ++k)
     std::fprintf(stderr, "%s%.9g", k ? ", " : "", static_cast<double>(v[k]));
   std::fprintf(stderr, ")");
+}
+
+const char* format_name(const TextureInput& t) {
+  if (t.format == TexelFormat::rgba32f) return "rgba32f";
+  return t.encoding == ColorEncoding::srgb ? "rgba8 sRGB" : "rgba8 linear";
+}
+
+void print_texture(const Case& c) {
+  const TextureInput& t = *c.texture_input;
+  const DrawTexture& d = *c.options.texture;
+  const SamplerOptions& o = d.sampler;
+  std::fprintf(stderr,
+               "texture %s %dx%d, %s pyramid, ripmaps %s, summed-area table %s, texels %s "
+               "(seed %" PRIu32 ", float scale 2^%d), palette",
+               format_name(t), t.width, t.height,
+               std::string(pyramid_filter_name(t.build.filter)).c_str(),
+               t.build.ripmaps ? "yes" : "no", t.build.summed_area_table ? "yes" : "no",
+               t.random_layout ? "at random palette entries" : "cycling through the palette",
+               t.seed, t.scale_exponent);
+  for (const auto& entry : t.palette)
+    std::fprintf(stderr, " %02x%02x%02x%02x", entry[0], entry[1], entry[2], entry[3]);
+  std::fprintf(stderr,
+               "%s\nfilter %s, wrap %s/%s, lod %s, lod_bias %.9g, max_anisotropy %d, "
+               "supersample_taps %d (variant %" PRIu32 "), derivatives %s\n",
+               c.texture ? "" : " (not passed: a null texture)",
+               std::string(texture_filter_name(o.filter)).c_str(),
+               std::string(wrap_mode_name(o.wrap_s)).c_str(),
+               std::string(wrap_mode_name(o.wrap_t)).c_str(),
+               std::string(lod_formula_name(o.lod)).c_str(), static_cast<double>(o.lod_bias),
+               o.max_anisotropy, o.supersample_taps, t.variant,
+               std::string(texture_derivatives_name(d.derivatives)).c_str());
 }
 
 void print_case(const Case& c) {
@@ -428,8 +645,9 @@ void print_case(const Case& c) {
                  static_cast<double>(row[1]), static_cast<double>(row[2]),
                  static_cast<double>(row[3]));
   }
-  std::fprintf(stderr, "%zu positions, %zu colours, %zu normals\n", c.positions.size(),
-               c.colors.size(), c.normals.size());
+  if (c.texture_input) print_texture(c);
+  std::fprintf(stderr, "%zu positions, %zu colours, %zu normals, %zu texture coordinates\n",
+               c.positions.size(), c.colors.size(), c.normals.size(), c.uvs.size());
   for (std::size_t v = 0; v < c.positions.size(); ++v) {
     std::fprintf(stderr, "  vertex %zu:", v);
     print_vec("position", &c.positions[v].x, 3);
@@ -437,6 +655,11 @@ void print_case(const Case& c) {
                  static_cast<double>(c.positions[v].y), static_cast<double>(c.positions[v].z));
     if (v < c.colors.size()) print_vec("colour", &c.colors[v].x, 4);
     if (v < c.normals.size()) print_vec("normal", &c.normals[v].x, 3);
+    if (v < c.uvs.size()) {
+      print_vec("uv", &c.uvs[v].x, 2);
+      std::fprintf(stderr, " = (%a, %a)", static_cast<double>(c.uvs[v].x),
+                   static_cast<double>(c.uvs[v].y));
+    }
     const Vec4 clip = transform(o.transform, c.positions[v]);
     print_vec("clip", &clip.x, 4);
     std::fprintf(stderr, "\n");
@@ -502,9 +725,9 @@ std::string float_text(float v) {
   return text;
 }
 
-std::vector<Output> draw_every_isa(const Case& c, const DrawMesh& mesh) {
+std::vector<Output> draw_on(const Case& c, const DrawMesh& mesh, std::span<const Isa> isas) {
   std::vector<Output> outputs;
-  for (Isa isa : supported_isas()) {  // the reference first
+  for (Isa isa : isas) {
     Output out{isa, false, {}, {}, Framebuffer(c.width, c.height)};
     out.target.clear(c.clear_color, c.clear_depth);
     DrawOptions options = c.options;
@@ -526,6 +749,10 @@ std::vector<Output> draw_every_isa(const Case& c, const DrawMesh& mesh) {
   return outputs;
 }
 
+std::vector<Output> draw_every_isa(const Case& c, const DrawMesh& mesh) {
+  return draw_on(c, mesh, supported_isas());  // the reference first
+}
+
 bool same_counts(const DrawReport& a, const DrawReport& b) {
   return a.triangles == b.triangles && a.clipped == b.clipped &&
          a.clip_triangles == b.clip_triangles && a.outside == b.outside && a.culled == b.culled &&
@@ -540,6 +767,7 @@ struct Piece {
   Vec2 snapped[3];
   ScreenTriangle screen;
   VertexAttributes attributes;
+  Vec2 uvs[3];  // (0, 0) untextured, as render.cpp passes them
 };
 
 float snap(float v) {
@@ -549,12 +777,15 @@ float snap(float v) {
 void append_pieces(const Case& c, const std::uint32_t corner[3], std::vector<Piece>& pieces) {
   const Viewport viewport{c.width, c.height};
   const bool diffuse = c.options.shading == Shading::diffuse;
+  const bool textured = c.options.texture.has_value();
   Vec4 clip[3], color[3];
   Vec3 normal[3];
+  Vec2 uv[3];
   for (int i = 0; i < 3; ++i) {
     clip[i] = transform(c.options.transform, c.positions[corner[i]]);
     color[i] = c.colors.empty() ? Vec4{1, 1, 1, 1} : c.colors[corner[i]];
     normal[i] = diffuse ? c.normals[corner[i]] : Vec3{0, 0, 0};
+    uv[i] = textured ? c.uvs[corner[i]] : Vec2{0, 0};
   }
   const ClippedPolygon polygon =
       clip_triangle(clip[0], clip[1], clip[2], guard_band_planes(viewport));
@@ -562,11 +793,12 @@ void append_pieces(const Case& c, const std::uint32_t corner[3], std::vector<Pie
     Vec4 clip;
     Vec4 color;
     Vec3 normal;
+    Vec2 uv;
   };
   std::vector<Vertex> fan;
   if (polygon.status == ClipStatus::inside) {
     for (int i = 0; i < 3; ++i)
-      fan.push_back({clip[i], color[i], normal[i]});
+      fan.push_back({clip[i], color[i], normal[i], uv[i]});
   } else if (polygon.status == ClipStatus::clipped) {
     for (int k = 0; k < polygon.count; ++k) {
       const ClipVertex& v = polygon.vertices[k];
@@ -578,7 +810,8 @@ void append_pieces(const Case& c, const std::uint32_t corner[3], std::vector<Pie
             blend(color[0].z, color[1].z, color[2].z), blend(color[0].w, color[1].w, color[2].w)},
            {blend(normal[0].x, normal[1].x, normal[2].x),
             blend(normal[0].y, normal[1].y, normal[2].y),
-            blend(normal[0].z, normal[1].z, normal[2].z)}});
+            blend(normal[0].z, normal[1].z, normal[2].z)},
+           {blend(uv[0].x, uv[1].x, uv[2].x), blend(uv[0].y, uv[1].y, uv[2].y)}});
     }
   }
   for (std::size_t k = 0; k + 2 < fan.size(); ++k) {
@@ -593,6 +826,7 @@ void append_pieces(const Case& c, const std::uint32_t corner[3], std::vector<Pie
       p.screen.w[i] = v.clip.w;
       p.attributes.colors[i] = v.color;
       p.attributes.normals[i] = v.normal;
+      p.uvs[i] = v.uv;
     }
     pieces.push_back(p);
   }
@@ -646,11 +880,23 @@ bool finite_attributes(const VertexAttributes& a) {
 struct Stats {
   std::uint64_t inputs = 0, invalid = 0, colour_draws = 0, pixels = 0, bounded = 0,
                 nearest_ties = 0, non_finite = 0, widest = 0;
+  std::uint64_t textured_draws = 0, textured_pixels = 0, textured_differing = 0,
+                textured_checked = 0, textured_unbounded = 0, non_finite_queries = 0;
+  std::uint64_t per_filter[kFilterCount] = {};  // textured pixels checked against their bound
+  double closest = -std::numeric_limits<double>::infinity();  // the largest excess (<= 0)
 } stats;
 
-// The codes the fast colour may differ by at pixel (x, y) if `piece` wrote it; nullopt where the
-// method has no single right answer (nearest vertex at a tie) or the attributes are not finite.
-std::optional<int> allowed_for(const Case& c, const Piece& piece, std::int32_t x, std::int32_t y) {
+// The shaded colour's bound at one pixel: in codes (255: any colour) and as a linear channel
+// difference.
+struct ColourBound {
+  int codes;
+  double error;
+};
+
+// The bound of the fast colour at pixel (x, y) if `piece` wrote it; nullopt where the method has
+// no single right answer (nearest vertex at a tie) or the attributes are not finite.
+std::optional<ColourBound> colour_bound_for(const Case& c, const Piece& piece, std::int32_t x,
+                                            std::int32_t y) {
   const DrawOptions& o = c.options;
   if (!finite_attributes(piece.attributes)) {
     ++stats.non_finite;
@@ -680,12 +926,14 @@ std::optional<int> allowed_for(const Case& c, const Piece& piece, std::int32_t x
   } else if (o.interpolation == InterpolationMethod::plane_equations &&
              o.shading == Shading::gouraud) {
     // Gouraud colour by plane equations: the kernels' colour-plane path.
-    return test::plane_colour_codes(t, piece.attributes, o.perspective, px, py);
+    return ColourBound{test::plane_colour_codes(t, piece.attributes, o.perspective, px, py),
+                       test::plane_colour_error(t, piece.attributes, o.perspective, px, py)};
   } else {
     e = test::weight_errors(o.interpolation, o.perspective, t, px, py);
   }
-  return allowed_codes(piece.attributes, e,
-                       o.shading == Shading::flat ? Shading::gouraud : o.shading, o.ambient);
+  const Shading shading = o.shading == Shading::flat ? Shading::gouraud : o.shading;
+  return ColourBound{allowed_codes(piece.attributes, e, shading, o.ambient),
+                     test::colour_error(piece.attributes, e, shading, o.ambient)};
 }
 
 std::uint32_t clear_code(const Case& c) {
@@ -796,9 +1044,10 @@ void check_colours(const Case& c, std::span<const Output> outputs, std::span<con
         int allowed = -1;
         bool unchecked = false;
         for (std::uint64_t m = writers; m != 0; m &= m - 1) {
-          const std::optional<int> a = allowed_for(c, pieces[std::countr_zero(m)], x, y);
+          const std::optional<ColourBound> a =
+              colour_bound_for(c, pieces[std::countr_zero(m)], x, y);
           unchecked = unchecked || !a;
-          if (a) allowed = std::max(allowed, *a);
+          if (a) allowed = std::max(allowed, a->codes);
         }
         if (unchecked) continue;
         stats.widest =
@@ -824,6 +1073,137 @@ void check_colours(const Case& c, std::span<const Output> outputs, std::span<con
   }
 }
 
+std::array<std::uint8_t, 4> channels_of(std::uint32_t code) {
+  return {static_cast<std::uint8_t>(code), static_cast<std::uint8_t>(code >> 8),
+          static_cast<std::uint8_t>(code >> 16), static_cast<std::uint8_t>(code >> 24)};
+}
+
+// What one writer of a textured pixel allows there (tests/render/textured_bounds.hpp).
+struct WriterBound {
+  TextureQuery query;
+  double texel_bound, colour_error;
+  std::vector<test::CodeRanges> allowed;
+};
+
+std::string describe_writer(const Piece& p, const WriterBound& w) {
+  std::string text;
+  char line[320];
+  for (int k = 0; k < 3; ++k) {
+    std::snprintf(line, sizeof line, "\n  (%a, %a) w %a uv (%a, %a)", p.screen.x[k], p.screen.y[k],
+                  p.screen.w[k], static_cast<double>(p.uvs[k].x), static_cast<double>(p.uvs[k].y));
+    text += line;
+  }
+  const TextureQuery& q = w.query;
+  std::snprintf(line, sizeof line,
+                "\n  query s %a t %a dsdx %a dtdx %a dsdy %a dtdy %a; texel bound %.9g, colour "
+                "error %.9g; allowed codes per accepted texel:",
+                static_cast<double>(q.s), static_cast<double>(q.t), static_cast<double>(q.dsdx),
+                static_cast<double>(q.dtdx), static_cast<double>(q.dsdy),
+                static_cast<double>(q.dtdy), w.texel_bound, w.colour_error);
+  text += line;
+  for (const test::CodeRanges& r : w.allowed) {
+    std::snprintf(line, sizeof line, "\n    [%.6g, %.6g] [%.6g, %.6g] [%.6g, %.6g] [%.6g, %.6g]",
+                  r.lo[0], r.hi[0], r.lo[1], r.hi[1], r.lo[2], r.hi[2], r.lo[3], r.hi[3]);
+    text += line;
+  }
+  return text;
+}
+
+// One mesh triangle alone, textured: where any ISA's colour differs from the reference's, every
+// colour (the reference's too) is held to the textured bound of a piece that covers the pixel,
+// from the pixel's query on that piece and its colour in the reference's untextured draw.
+void check_textured_colours(const Case& c, const test::TexturedPixelCheck& check,
+                            std::span<const Output> outputs, const Framebuffer& untextured,
+                            std::span<const Piece> pieces) {
+  const Output& ref = outputs.front();
+  const PixelRect clip = clip_rect(RasterTarget{c.width, c.height, c.options.scissor});
+  const CoverageMap coverage(c, pieces);
+  const DrawTexture& d = *c.options.texture;
+  std::vector<detail::TexturePlanes> planes;
+  std::vector<test::ShadedRange> shaded;
+  for (const Piece& p : pieces) {
+    planes.push_back(
+        detail::make_texture_planes(p.snapped, p.uvs, p.screen.w, c.options.perspective));
+    shaded.push_back(test::shaded_range(p.attributes, c.options.shading, c.options.ambient));
+  }
+  ++stats.textured_draws;
+  for (std::int32_t y = clip.y0; y < clip.y1; ++y) {
+    for (std::int32_t x = clip.x0; x < clip.x1; ++x) {
+      const std::uint64_t writers = coverage.at(x, y);
+      if (writers == 0) continue;  // check_draw: unchanged
+      ++stats.textured_pixels;
+      const std::size_t i = ref.target.index(x, y);
+      const std::uint32_t expected = ref.target.color_tiles()[i];
+      if (std::all_of(outputs.begin(), outputs.end(),
+                      [&](const Output& o) { return o.target.color_tiles()[i] == expected; })) {
+        continue;
+      }
+      ++stats.textured_differing;
+      const std::array<std::uint8_t, 4> plain = channels_of(untextured.color_tiles()[i]);
+      std::vector<std::pair<std::size_t, WriterBound>> bounds;
+      bool unbounded = false;
+      for (std::uint64_t m = writers; m != 0 && !unbounded; m &= m - 1) {
+        const std::size_t k = static_cast<std::size_t>(std::countr_zero(m));
+        const std::optional<ColourBound> a = colour_bound_for(c, pieces[k], x, y);
+        unbounded = !a || a->codes >= 255;
+        if (unbounded) break;
+        WriterBound w;
+        w.query = detail::texture_query(planes[k], d.derivatives, x, y);
+        w.texel_bound = check.texel_bound(w.query);
+        w.colour_error = a->error;
+        w.allowed = check.allowed(w.query, plain.data(), shaded[k], a->error);
+        stats.non_finite_queries += std::isfinite(w.query.s) && std::isfinite(w.query.t) ? 0 : 1;
+        bounds.emplace_back(k, std::move(w));
+      }
+      if (unbounded) {
+        ++stats.textured_unbounded;
+        continue;
+      }
+      ++stats.textured_checked;
+      ++stats.per_filter[static_cast<int>(d.sampler.filter)];
+      for (const Output& o : outputs) {
+        const std::array<std::uint8_t, 4> got = channels_of(o.target.color_tiles()[i]);
+        double excess = std::numeric_limits<double>::infinity();
+        for (const auto& [k, w] : bounds)
+          excess = std::min(excess, test::TexturedPixelCheck::excess(w.allowed, got.data()));
+        stats.closest = std::max(stats.closest, excess);
+        if (excess <= 0.0) continue;
+        std::string detail = std::string(isa_name(o.isa)) + " " + pixel_text(x, y) + ": colour " +
+                             hex(o.target.color_tiles()[i]) + ", reference " + hex(expected) +
+                             ", untextured reference " + hex(untextured.color_tiles()[i]) +
+                             " (ABGR), " + std::to_string(excess) +
+                             " codes outside the bound; written by one of:";
+        for (const auto& [k, w] : bounds)
+          detail += describe_writer(pieces[k], w);
+        fail(c,
+             o.isa == Isa::reference
+                 ? "the reference's textured colour is outside its own bound (a gap in the bound)"
+                 : "a textured colour is outside the derived bound",
+             outputs, detail);
+      }
+    }
+  }
+}
+
+// The reference's draw of a textured case without its texture (each pixel's shaded colour before
+// the texture), whose depth must equal the textured draw's: texturing changes no depth test.
+Framebuffer untextured_reference(const Case& c, std::span<const Output> outputs) {
+  Case plain = c;
+  plain.options.texture.reset();
+  const Isa reference[] = {Isa::reference};
+  std::vector<Output> drawn = draw_on(plain, plain.mesh(), reference);
+  const Framebuffer& textured = outputs.front().target;
+  const std::size_t storage = static_cast<std::size_t>(textured.tiles_x()) *
+                              static_cast<std::size_t>(textured.tiles_y()) * 64;
+  for (std::size_t i = 0; i < storage; ++i) {
+    if (std::bit_cast<std::uint32_t>(drawn.front().target.depth_tiles()[i]) !=
+        std::bit_cast<std::uint32_t>(textured.depth_tiles()[i])) {
+      fail(c, "the reference's depth differs with and without the texture", outputs, "");
+    }
+  }
+  return std::move(drawn.front().target);
+}
+
 void print_counts(const char* what, std::span<const Output> outputs) {
   std::fprintf(stderr, "%s\n", what);
   print_outputs(outputs);
@@ -838,6 +1218,19 @@ void print_stats() {
                " unchecked non-finite attributes\n",
                stats.inputs, stats.invalid, stats.colour_draws, stats.pixels, stats.bounded,
                stats.widest, stats.nearest_ties, stats.non_finite);
+  std::fprintf(
+      stderr,
+      "fuzz_draw textured: %" PRIu64 " one-triangle draws, %" PRIu64 " covered pixels, %" PRIu64
+      " where an ISA differs from the reference: %" PRIu64 " checked against their bound (%" PRIu64
+      " at non-finite s or t; largest excess %.3g codes), %" PRIu64
+      " unchecked (colour bound unbounded or unknown)\n",
+      stats.textured_draws, stats.textured_pixels, stats.textured_differing, stats.textured_checked,
+      stats.non_finite_queries, stats.closest, stats.textured_unbounded);
+  for (int f = 0; f < kFilterCount; ++f) {
+    std::fprintf(stderr, "  %-20s %10" PRIu64 " pixels checked\n",
+                 std::string(texture_filter_name(static_cast<TextureFilter>(f))).c_str(),
+                 stats.per_filter[f]);
+  }
 }
 
 bool printing() {
@@ -891,6 +1284,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
 
+  // The texture's extremes, scanned once (the options are valid here).
+  std::optional<test::TexturedPixelCheck> textured_check;
+  if (c.options.texture) textured_check.emplace(*c.texture, c.options.texture->sampler);
   for (std::size_t k = 0; k < corners_of.size(); ++k) {
     Case one = c;
     one.part = "triangle " + std::to_string(k) + " of the mesh (corners " +
@@ -901,15 +1297,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     one.positions.clear();
     one.colors.clear();
     one.normals.clear();
+    one.uvs.clear();
     for (std::uint32_t v : corners_of[k]) {
       one.positions.push_back(c.positions[v]);
       if (!c.colors.empty()) one.colors.push_back(c.colors[v]);
       if (!c.normals.empty()) one.normals.push_back(c.normals[v]);
+      if (!c.uvs.empty()) one.uvs.push_back(c.uvs[v]);
     }
     const std::vector<Output> outputs = draw_every_isa(one, one.mesh());
     if (printing()) print_counts(one.part.c_str(), outputs);
     check_draw(one, outputs, pieces_of[k]);
-    check_colours(one, outputs, pieces_of[k]);
+    if (one.options.texture) {
+      check_textured_colours(one, *textured_check, outputs, untextured_reference(one, outputs),
+                             pieces_of[k]);
+    } else {
+      check_colours(one, outputs, pieces_of[k]);
+    }
   }
   return 0;
 }

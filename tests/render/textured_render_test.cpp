@@ -1,20 +1,9 @@
 // Textured draw(): every ISA against the scalar reference, for every filter, both derivative
-// methods and both perspective modes. Depth must be identical; colours must lie within a bound
-// built from the sampler's bound (tests/texture/sample_bounds.hpp) and the shading colour bound
-// (tests/render/colour_bounds.hpp).
-//
-// Both sides sample the texture at the same queries (kernels/src/texture_planes.hpp is one
-// float32 formula), so the test recomputes each pixel's query with that formula. A fast pixel
-// channel is F = round(255 C_f T_f) (the product rounded once in float), the reference's
-// R = round(255 C_r T_r), with T the filtered texel and C the shaded colour. For one of the
-// texels T that the sampler's bound accepts at the query (several across a filter's
-// discontinuities), |T_f - T| <= b (sample_bound) and |C_f - C_r| <= e (the colour bound), so
-//   |F - 255 C_r T| <= 0.5 + 255 (b (C_r + e) + |T| e) + 255 |C_f T_f| 2^-24.
-// C_r is taken from the untextured reference render of the same triangle, R0 = round(255 C_r),
-// which adds |T| / 2 for its rounding: the test accepts F when some accepted T satisfies
-//   |F - T R0| <= 0.5 + |T| / 2 + 255 (b (R0 / 255 + 1 / 510 + e) + |T| e) + 2^-16.
-// Colour channels are clamped to [0, 1] on both sides before rounding (1-Lipschitz), and so are
-// the candidates here.
+// methods and both perspective modes. Depth must be identical; colours must lie within the bound
+// of tests/render/textured_bounds.hpp (derived there), built from the sampler's bound
+// (tests/texture/sample_bounds.hpp) and the shading colour bound (tests/render/colour_bounds.hpp),
+// with each pixel's query recomputed by the kernels' formula (kernels/src/texture_planes.hpp) and
+// its untextured colour taken from the reference render of the same triangle without texture.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,8 +20,8 @@
 #include "random.hpp"
 #include "render/colour_bounds.hpp"
 #include "render/render_scenes.hpp"
+#include "render/textured_bounds.hpp"
 #include "src/texture_planes.hpp"
-#include "texture/sample_bounds.hpp"
 
 namespace edgewise::test {
 namespace {
@@ -48,35 +37,6 @@ Texture random_texture(Random& random, ColorEncoding encoding) {
     v = static_cast<std::uint8_t>(random.integer(0, 255));
   return Texture::from_rgba8(width, height, texels, encoding, {PyramidFilter::box, true, true});
 }
-
-// How a pixel's fast colour may differ from the reference (the header's derivation).
-struct PixelCheck {
-  const Texture& texture;
-  const TextureExtremes& extremes;
-  const SamplerOptions& sampler;
-
-  // The largest excess over the allowed difference on any channel (<= 0 passes), for the best of
-  // the accepted texels.
-  double excess(const TextureQuery& query, const std::uint8_t fast[4],
-                const std::uint8_t untextured[4], double colour_error) const {
-    const double b = sample_bound(texture, extremes, sampler, query);
-    double best = std::numeric_limits<double>::infinity();
-    for (const reference::Rgba& texel : accepted_references(texture, sampler, query)) {
-      double worst = -std::numeric_limits<double>::infinity();
-      for (int k = 0; k < 4; ++k) {
-        const double t = std::abs(texel[k]);
-        const double r0 = untextured[k];
-        const double expected = std::clamp(texel[k] * r0, 0.0, 255.0);
-        const double allowed =
-            0.5 + t / 2 +
-            255.0 * (b * (r0 / 255.0 + 1.0 / 510.0 + colour_error) + t * colour_error) + 0x1p-16;
-        worst = std::max(worst, std::abs(fast[k] - expected) - allowed);
-      }
-      best = std::min(best, worst);
-    }
-    return best;
-  }
-};
 
 struct Case {
   TextureFilter filter;
@@ -117,7 +77,6 @@ struct Totals {
 // Each triangle of `scene` alone, so that every written pixel comes from a known triangle.
 void check_case(Isa isa, const Case& c, const Scene& scene, const Texture& texture,
                 Totals& totals) {
-  const TextureExtremes extremes = texture_extremes(texture);
   DrawOptions options = perspective_options(kWidth, kHeight);
   options.interpolation = c.method;
   options.perspective = c.perspective;
@@ -127,7 +86,7 @@ void check_case(Isa isa, const Case& c, const Scene& scene, const Texture& textu
   options.texture->sampler.filter = c.filter;
   options.texture->sampler.max_anisotropy = 8;
   options.texture->sampler.supersample_taps = 3;
-  const PixelCheck check{texture, extremes, options.texture->sampler};
+  const TexturedPixelCheck check(texture, options.texture->sampler);
   const Viewport viewport{kWidth, kHeight};
   for (std::size_t t = 0; t < scene.positions.size() / 3; ++t) {
     const Scene one = triangle_of(scene, t);
@@ -138,6 +97,7 @@ void check_case(Isa isa, const Case& c, const Scene& scene, const Texture& textu
       uv[i] = one.uvs[i];
     }
     const detail::TexturePlanes planes = detail::make_texture_planes(p, uv, tri.w, c.perspective);
+    const ShadedRange shaded = shaded_range(attributes_of(one, 0), c.shading, options.ambient);
     const Rendered expected = render(Isa::reference, one, options, kWidth, kHeight);
     const Rendered actual = render(isa, one, options, kWidth, kHeight);
     const Rendered plain = render(Isa::reference, one, untextured, kWidth, kHeight);
@@ -148,12 +108,14 @@ void check_case(Isa isa, const Case& c, const Scene& scene, const Texture& textu
         if (expected.depth[at] == 1.0f) continue;  // not drawn
         const TextureQuery query = detail::texture_query(planes, c.derivatives, x, y);
         const double e = colour_error_at(c, one, tri, options, x + 0.5, y + 0.5);
+        const std::vector<CodeRanges> allowed =
+            check.allowed(query, &plain.rgba[4 * at], shaded, e);
         // The reference itself at this query: its code is one of the accepted ones, exactly.
         const std::uint8_t* ref = &expected.rgba[4 * at];
-        ASSERT_LE(check.excess(query, ref, &plain.rgba[4 * at], e), 0.0)
+        ASSERT_LE(TexturedPixelCheck::excess(allowed, ref), 0.0)
             << "reference, " << describe(c) << " triangle " << t << " pixel " << x << "," << y;
         const std::uint8_t* got = &actual.rgba[4 * at];
-        ASSERT_LE(check.excess(query, got, &plain.rgba[4 * at], e), 0.0)
+        ASSERT_LE(TexturedPixelCheck::excess(allowed, got), 0.0)
             << describe(c) << " triangle " << t << " pixel " << x << "," << y << " got "
             << int{got[0]} << "," << int{got[1]} << "," << int{got[2]} << "," << int{got[3]}
             << " reference " << int{ref[0]} << "," << int{ref[1]} << "," << int{ref[2]} << ","
