@@ -85,6 +85,7 @@
 #include "reference/interpolation_reference.hpp"
 #include "render/colour_bounds.hpp"
 #include "render/textured_bounds.hpp"
+#include "sampler_input.hpp"
 #include "seed_files.hpp"
 #include "src/texture_planes.hpp"
 
@@ -104,7 +105,7 @@ constexpr std::size_t kMaxVertices = 3 * kMaxTriangles;
 // lets the input choose the texel values without paying for every texel.
 constexpr std::int32_t kMaxTextureSide = 64;
 constexpr std::uint32_t kMaxPalette = 8;
-constexpr int kFilterCount = static_cast<int>(TextureFilter::ewa) + 1;
+using fuzz::kFilterCount;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -279,38 +280,7 @@ bool decode_texture(FuzzInput& in, Case& c) {
   }
   t.seed = in.u32();
   t.scale_exponent = static_cast<int>(in.u8() % 21) - 10;
-  o.filter = static_cast<TextureFilter>(in.u8() % kFilterCount);
-  const std::uint32_t wrap = in.u8();
-  o.wrap_s = static_cast<WrapMode>(wrap % 3);
-  o.wrap_t = static_cast<WrapMode>(wrap / 3 % 3);
-  o.lod_bias = static_cast<float>(in.i8()) / 64.0f;
-  o.max_anisotropy = 1 + static_cast<int>(in.u8() % kMaxAnisotropyLimit);
-  o.supersample_taps = 1 + static_cast<int>(in.u8() % kMaxSupersampleTaps);
-  t.variant = in.u8();
-  t.build.ripmaps = t.variant != 248;
-  t.build.summed_area_table = t.variant != 249;
-  switch (t.variant) {
-    case 250:
-      o.max_anisotropy = 0;
-      break;
-    case 251:
-      o.max_anisotropy = kMaxAnisotropyLimit + 1;
-      break;
-    case 252:
-      o.supersample_taps = 0;
-      break;
-    case 253:
-      o.supersample_taps = kMaxSupersampleTaps + 1;
-      break;
-    case 254:
-      o.lod_bias = kInf;
-      break;
-    case 255:
-      o.lod_bias = kNaN;
-      break;
-    default:
-      break;
-  }
+  t.variant = fuzz::decode_sampler(in, o, t.build).variant;
   for (std::size_t v = 0; v < c.positions.size(); ++v)
     c.uvs.push_back({in.number(), in.number()});
   if (uv_short && !c.uvs.empty()) c.uvs.pop_back();
@@ -406,31 +376,8 @@ Case decode(std::span<const std::uint8_t> bytes) {
 // covered pixels rather than from empty meshes, and textured with every filter. Written by
 // LLVMFuzzerInitialize into the directory EDGEWISE_FUZZ_SEEDS names (tools/check passes its
 // corpus).
-class InputWriter {
+class InputWriter : public fuzz::SeedWriter<InputWriter> {
  public:
-  InputWriter& u8(std::uint32_t v) {
-    bytes.push_back(static_cast<std::uint8_t>(v));
-    return *this;
-  }
-  InputWriter& i8(std::int32_t v) { return u8(static_cast<std::uint32_t>(v) & 0xFF); }
-  InputWriter& number(float v) {
-    const float fixed = v * 4096.0f;
-    if (fixed == std::nearbyint(fixed) && fixed >= -32768.0f && fixed <= 32767.0f) {
-      const std::uint32_t bits = static_cast<std::uint32_t>(static_cast<std::int32_t>(fixed));
-      return u8(0).u8(bits & 0xFF).u8((bits >> 8) & 0xFF);
-    }
-    u8(255);
-    const std::uint32_t bits = std::bit_cast<std::uint32_t>(v);
-    for (int i = 0; i < 4; ++i)
-      u8((bits >> (8 * i)) & 0xFF);
-    return *this;
-  }
-  InputWriter& numbers(std::initializer_list<float> values) {
-    for (float v : values)
-      number(v);
-    return *this;
-  }
-  // Position, colour bytes (v - 16) / 223, normal bytes v / 32, no extra.
   InputWriter& vertex(Vec3 p, std::uint32_t r, std::uint32_t g, std::uint32_t b, Vec3 n) {
     numbers({p.x, p.y, p.z}).u8(r).u8(g).u8(b).u8(239);
     return i8(static_cast<std::int32_t>(n.x * 32))
@@ -438,7 +385,6 @@ class InputWriter {
         .i8(static_cast<std::int32_t>(n.z * 32))
         .u8(0);
   }
-  std::vector<std::uint8_t> bytes;
 };
 
 struct SeedHeader {

@@ -57,6 +57,7 @@
 #include "edgewise/texture.hpp"
 #include "random.hpp"
 #include "reference/sample_reference.hpp"
+#include "sampler_input.hpp"
 #include "seed_files.hpp"
 #include "texture/sample_bounds.hpp"
 
@@ -67,7 +68,7 @@ using namespace edgewise;
 // Small textures keep the reference (and EWA's ellipses) fast; odd and one-texel sides included.
 constexpr std::int32_t kMaxTextureSide = 40;
 constexpr std::uint32_t kMaxQueries = 12;
-constexpr int kFilterCount = static_cast<int>(TextureFilter::ewa) + 1;
+using fuzz::kFilterCount;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -146,39 +147,9 @@ Case decode(std::span<const std::uint8_t> bytes) {
   c.seed = in.u32();
   c.scale_exponent = static_cast<int>(in.u8() % 21) - 10;
   SamplerOptions& o = c.options;
-  o.filter = static_cast<TextureFilter>(in.u8() % kFilterCount);
-  const std::uint32_t wrap = in.u8();
-  o.wrap_s = static_cast<WrapMode>(wrap % 3);
-  o.wrap_t = static_cast<WrapMode>(wrap / 3 % 3);
-  o.lod = (wrap & 128) != 0 ? LodFormula::max_axis : LodFormula::exact;
-  o.lod_bias = static_cast<float>(in.i8()) / 64.0f;
-  o.max_anisotropy = 1 + static_cast<int>(in.u8() % kMaxAnisotropyLimit);
-  o.supersample_taps = 1 + static_cast<int>(in.u8() % kMaxSupersampleTaps);
-  c.variant = in.u8();
-  c.build.ripmaps = c.variant != 248;
-  c.build.summed_area_table = c.variant != 249;
-  switch (c.variant) {
-    case 250:
-      o.max_anisotropy = 0;
-      break;
-    case 251:
-      o.max_anisotropy = kMaxAnisotropyLimit + 1;
-      break;
-    case 252:
-      o.supersample_taps = 0;
-      break;
-    case 253:
-      o.supersample_taps = kMaxSupersampleTaps + 1;
-      break;
-    case 254:
-      o.lod_bias = kInf;
-      break;
-    case 255:
-      o.lod_bias = kNaN;
-      break;
-    default:
-      break;
-  }
+  const fuzz::SamplerInput sampler = fuzz::decode_sampler(in, o, c.build);
+  o.lod = (sampler.wrap_byte & 128) != 0 ? LodFormula::max_axis : LodFormula::exact;
+  c.variant = sampler.variant;
   const std::uint32_t count = 1 + in.u8() % kMaxQueries;
   for (std::uint32_t i = 0; i < count; ++i) {
     TextureQuery q;
@@ -230,31 +201,7 @@ Texture make_texture(const Case& c) {
 // strong anisotropy, so that fuzzing starts from every kernel's main path. Written by
 // LLVMFuzzerInitialize into the directory EDGEWISE_FUZZ_SEEDS names (tools/check passes its
 // corpus).
-class InputWriter {
- public:
-  InputWriter& u8(std::uint32_t v) {
-    bytes.push_back(static_cast<std::uint8_t>(v));
-    return *this;
-  }
-  InputWriter& number(float v) {
-    const float fixed = v * 4096.0f;
-    if (fixed == std::nearbyint(fixed) && fixed >= -32768.0f && fixed <= 32767.0f) {
-      const std::uint32_t bits = static_cast<std::uint32_t>(static_cast<std::int32_t>(fixed));
-      return u8(0).u8(bits & 0xFF).u8((bits >> 8) & 0xFF);
-    }
-    u8(255);
-    const std::uint32_t bits = std::bit_cast<std::uint32_t>(v);
-    for (int i = 0; i < 4; ++i)
-      u8((bits >> (8 * i)) & 0xFF);
-    return *this;
-  }
-  InputWriter& query(std::initializer_list<float> values) {
-    for (float v : values)
-      number(v);
-    return *this;
-  }
-  std::vector<std::uint8_t> bytes;
-};
+class InputWriter : public fuzz::SeedWriter<InputWriter> {};
 
 std::vector<std::vector<std::uint8_t>> seed_inputs() {
   struct Shape {
@@ -271,16 +218,16 @@ std::vector<std::vector<std::uint8_t>> seed_inputs() {
     w.u8(static_cast<std::uint32_t>(f)).u8(static_cast<std::uint32_t>(f) % 9);
     w.u8(0).u8(15).u8(3).u8(0);  // bias 0, max_anisotropy 16, 4 x 4 taps, everything built
     w.u8(9);                     // 10 queries: a full AVX2 batch and a partial one
-    w.query({0.5f, 0.5f, 0, 0, 0, 0});
-    w.query({0.3f, 0.7f, 0.001f, 0, 0, 0.001f});
-    w.query({-1.25f, 2.5f, 0.05f, 0.01f, -0.01f, 0.05f});
-    w.query({0.75f, 0.125f, 0.25f, 0, 0, 0.25f});
-    w.query({0.1f, 0.9f, 0.5f, 0.01f, 0, 0.004f});  // anisotropy over 100
-    w.query({3.5f, -0.25f, 0.02f, 0.2f, -0.2f, 0.02f});
-    w.query({0.0f, 1.0f, 2.0f, 0.0f, 0.0f, 3.0f});
-    w.query({0.999f, 0.001f, 0.0625f, 0.0625f, -0.0625f, 0.0625f});
-    w.query({kNaN, 0.5f, 0.1f, 0, 0, 0.1f});
-    w.query({0.5f, 0.5f, kInf, 0, 0, 0.1f});
+    w.numbers({0.5f, 0.5f, 0, 0, 0, 0});
+    w.numbers({0.3f, 0.7f, 0.001f, 0, 0, 0.001f});
+    w.numbers({-1.25f, 2.5f, 0.05f, 0.01f, -0.01f, 0.05f});
+    w.numbers({0.75f, 0.125f, 0.25f, 0, 0, 0.25f});
+    w.numbers({0.1f, 0.9f, 0.5f, 0.01f, 0, 0.004f});  // anisotropy over 100
+    w.numbers({3.5f, -0.25f, 0.02f, 0.2f, -0.2f, 0.02f});
+    w.numbers({0.0f, 1.0f, 2.0f, 0.0f, 0.0f, 3.0f});
+    w.numbers({0.999f, 0.001f, 0.0625f, 0.0625f, -0.0625f, 0.0625f});
+    w.numbers({kNaN, 0.5f, 0.1f, 0, 0, 0.1f});
+    w.numbers({0.5f, 0.5f, kInf, 0, 0, 0.1f});
     seeds.push_back(w.bytes);
   }
   return seeds;

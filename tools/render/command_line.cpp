@@ -6,6 +6,7 @@
 #include <string>
 #include <system_error>
 
+#include "option_values.hpp"
 #include "edgewise/interpolation.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/raster.hpp"
@@ -72,25 +73,9 @@ const std::string_view kUsage =
 
 namespace {
 
-std::string quoted(std::string_view text) {
-  return "'" + std::string(text) + "'";
-}
-
-std::optional<float> parse_finite_float(std::string_view text) {
-  float value = 0.0f;
-  const char* last = text.data() + text.size();
-  const auto [end, ec] = std::from_chars(text.data(), last, value);
-  if (ec != std::errc() || end != last || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
-float parse_number(std::string_view option, std::string_view text) {
-  const std::optional<float> value = parse_finite_float(text);
-  if (!value) {
-    throw UsageError(std::string(option) + " " + quoted(text) + " is not a finite number");
-  }
-  return *value;
-}
+using tools::parse_finite_float;
+using tools::quoted;
+using Values = tools::OptionValues<UsageError>;
 
 Vec3 parse_vector(std::string_view option, std::string_view text) {
   float xyz[3];
@@ -109,11 +94,9 @@ Vec3 parse_vector(std::string_view option, std::string_view text) {
 }
 
 std::int32_t parse_side(std::string_view text, bool& ok) {
-  std::int32_t value = 0;
-  const char* last = text.data() + text.size();
-  const auto [end, ec] = std::from_chars(text.data(), last, value);
-  ok = ec == std::errc() && end == last && value >= 1 && value <= kMaxTargetSize;
-  return value;
+  const std::optional<std::int64_t> value = tools::parse_integer(text);
+  ok = value && *value >= 1 && *value <= kMaxTargetSize;
+  return ok ? static_cast<std::int32_t>(*value) : 0;
 }
 
 void parse_size(std::string_view text, RenderSettings& settings) {
@@ -141,34 +124,11 @@ Isa parse_isa_option(std::string_view name) {
   }
 }
 
-// `parse` is one of the library's name parsers; `names` lists the accepted values.
-template <class Parse>
-auto parse_named(std::string_view option, std::string_view text, Parse parse,
-                 std::string_view names) {
-  const auto value = parse(text);
-  if (!value) {
-    throw UsageError("unknown " + std::string(option) + " value " + quoted(text) + "; expected " +
-                     std::string(names));
-  }
-  return *value;
-}
-
 std::optional<CullMode> parse_cull_mode(std::string_view name) {
   for (CullMode mode : {CullMode::none, CullMode::clockwise, CullMode::counter_clockwise}) {
     if (cull_mode_name(mode) == name) return mode;
   }
   return std::nullopt;
-}
-
-int parse_int_in(std::string_view option, std::string_view text, int lo, int hi) {
-  int value = 0;
-  const char* last = text.data() + text.size();
-  const auto [end, ec] = std::from_chars(text.data(), last, value);
-  if (ec != std::errc() || end != last || value < lo || value > hi) {
-    throw UsageError(std::string(option) + " " + quoted(text) + " is not an integer in " +
-                     std::to_string(lo) + ".." + std::to_string(hi));
-  }
-  return value;
 }
 
 // "nearest, bilinear, ... or ewa", from the filters themselves.
@@ -186,26 +146,27 @@ template <class Value>
 bool parse_texture_option(std::string_view arg, Value value, TextureSettings& texture) {
   SamplerOptions& sampler = texture.sampler;
   if (arg == "--filter") {
-    sampler.filter = parse_named(arg, value(), parse_texture_filter, texture_filter_list());
+    sampler.filter = Values::named(arg, value(), parse_texture_filter, texture_filter_list());
   } else if (arg == "--each-filter") {
     texture.each_filter = true;
   } else if (arg == "--wrap") {
     sampler.wrap_s = sampler.wrap_t =
-        parse_named(arg, value(), parse_wrap_mode, "repeat, clamp or mirror");
+        Values::named(arg, value(), parse_wrap_mode, "repeat, clamp or mirror");
   } else if (arg == "--lod") {
-    sampler.lod = parse_named(arg, value(), parse_lod_formula, "exact or max_axis");
+    sampler.lod = Values::named(arg, value(), parse_lod_formula, "exact or max_axis");
   } else if (arg == "--lod-bias") {
-    sampler.lod_bias = parse_number(arg, value());
+    sampler.lod_bias = Values::number(arg, value());
   } else if (arg == "--max-aniso") {
-    sampler.max_anisotropy = parse_int_in(arg, value(), 1, kMaxAnisotropyLimit);
+    sampler.max_anisotropy = Values::integer_in(arg, value(), 1, kMaxAnisotropyLimit);
   } else if (arg == "--taps") {
-    sampler.supersample_taps = parse_int_in(arg, value(), 1, kMaxSupersampleTaps);
+    sampler.supersample_taps = Values::integer_in(arg, value(), 1, kMaxSupersampleTaps);
   } else if (arg == "--pyramid") {
-    texture.pyramid = parse_named(arg, value(), parse_pyramid_filter, "box or lanczos3");
+    texture.pyramid = Values::named(arg, value(), parse_pyramid_filter, "box or lanczos3");
   } else if (arg == "--srgb") {
     texture.srgb = true;
   } else if (arg == "--derivatives") {
-    texture.derivatives = parse_named(arg, value(), parse_texture_derivatives, "quad or analytic");
+    texture.derivatives =
+        Values::named(arg, value(), parse_texture_derivatives, "quad or analytic");
   } else {
     return false;
   }
@@ -266,34 +227,36 @@ RenderSettings parse_command_line(std::span<char* const> args) {
       camera.up = parse_vector(arg, value());
     } else if (arg == "--fov") {
       const std::string_view text = value();
-      camera.fov_degrees = parse_number(arg, text);
+      camera.fov_degrees = Values::number(arg, text);
       if (!(*camera.fov_degrees > 0.0f && *camera.fov_degrees < 180.0f)) {
         throw UsageError("--fov " + quoted(text) + " is not in (0, 180) degrees");
       }
     } else if (arg == "--near") {
-      camera.near_plane = parse_number(arg, value());
+      camera.near_plane = Values::number(arg, value());
     } else if (arg == "--far") {
-      camera.far_plane = parse_number(arg, value());
+      camera.far_plane = Values::number(arg, value());
     } else if (arg == "--ortho") {
       camera.orthographic = true;
     } else if (arg == "--size") {
       parse_size(value(), settings);
     } else if (arg == "--method") {
       settings.draw.interpolation =
-          parse_named(arg, value(), parse_interpolation_method,
-                      "nearest_vertex, inverse_distance, subtriangle_areas, edge_functions, "
-                      "scanline or plane_equations");
+          Values::named(arg, value(), parse_interpolation_method,
+                        "nearest_vertex, inverse_distance, subtriangle_areas, edge_functions, "
+                        "scanline or plane_equations");
     } else if (arg == "--perspective") {
-      settings.draw.perspective = parse_named(arg, value(), parse_perspective, "correct or affine");
+      settings.draw.perspective =
+          Values::named(arg, value(), parse_perspective, "correct or affine");
     } else if (arg == "--shading") {
-      settings.draw.shading = parse_named(arg, value(), parse_shading, "flat, gouraud or diffuse");
+      settings.draw.shading =
+          Values::named(arg, value(), parse_shading, "flat, gouraud or diffuse");
     } else if (arg == "--depth-test") {
-      settings.draw.depth_test =
-          parse_named(arg, value(), parse_depth_test, "less, less_equal, greater, always or never");
+      settings.draw.depth_test = Values::named(arg, value(), parse_depth_test,
+                                               "less, less_equal, greater, always or never");
     } else if (arg == "--no-depth-write") {
       settings.draw.depth_write = false;
     } else if (arg == "--cull") {
-      settings.draw.cull = parse_named(arg, value(), parse_cull_mode, "none, cw or ccw");
+      settings.draw.cull = Values::named(arg, value(), parse_cull_mode, "none, cw or ccw");
     } else if (arg == "--light") {
       settings.draw.light_direction = parse_vector(arg, value());
     } else if (arg == "--isa") {
@@ -307,7 +270,7 @@ RenderSettings parse_command_line(std::span<char* const> args) {
       if (first_texture_option.empty()) first_texture_option = arg;
       filter_given = filter_given || arg == "--filter";
     } else if (arg == "--repeat") {
-      settings.repeat = parse_int_in(arg, value(), 1, kMaxRepeat);
+      settings.repeat = Values::integer_in(arg, value(), 1, kMaxRepeat);
     } else if (arg == "-o") {
       const std::string_view path = value();
       image_format_for(path);  // refuse an unknown extension before any work

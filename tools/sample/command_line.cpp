@@ -6,6 +6,7 @@
 #include <string>
 #include <system_error>
 
+#include "option_values.hpp"
 #include "sample/usage_error.hpp"
 
 namespace edgewise::sample_tool {
@@ -51,42 +52,8 @@ const std::string_view kUsage =
 
 namespace {
 
-std::string quoted(std::string_view text) {
-  return "'" + std::string(text) + "'";
-}
-
-int parse_int_in(std::string_view option, std::string_view text, int lo, int hi) {
-  int value = 0;
-  const char* last = text.data() + text.size();
-  const auto [end, ec] = std::from_chars(text.data(), last, value);
-  if (ec != std::errc() || end != last || value < lo || value > hi) {
-    throw UsageError(std::string(option) + " " + quoted(text) + " is not an integer in " +
-                     std::to_string(lo) + ".." + std::to_string(hi));
-  }
-  return value;
-}
-
-float parse_finite_float(std::string_view option, std::string_view text) {
-  float value = 0.0f;
-  const char* last = text.data() + text.size();
-  const auto [end, ec] = std::from_chars(text.data(), last, value);
-  if (ec != std::errc() || end != last || !std::isfinite(value)) {
-    throw UsageError(std::string(option) + " " + quoted(text) + " is not a finite number");
-  }
-  return value;
-}
-
-// `parse` is one of the library's name parsers; `names` lists the accepted values.
-template <class Parse>
-auto parse_named(std::string_view option, std::string_view text, Parse parse,
-                 std::string_view names) {
-  const auto value = parse(text);
-  if (!value) {
-    throw UsageError("unknown " + std::string(option) + " value " + quoted(text) + "; expected " +
-                     std::string(names));
-  }
-  return *value;
-}
+using tools::quoted;
+using Values = tools::OptionValues<UsageError>;
 
 constexpr std::string_view kFilterNames =
     "nearest, bilinear, bicubic_catmull_rom, bicubic_bspline, mip_nearest, trilinear, "
@@ -127,24 +94,24 @@ SampleSettings parse_command_line(std::span<char* const> args) {
     } else if (arg == "--out") {
       settings.output_path = std::string(value());
     } else if (arg == "--filter") {
-      sampler.filter = parse_named(arg, value(), parse_texture_filter, kFilterNames);
+      sampler.filter = Values::named(arg, value(), parse_texture_filter, kFilterNames);
       filter_given = true;
     } else if (arg == "--wrap") {
-      wrap = parse_named(arg, value(), parse_wrap_mode, kWrapNames);
+      wrap = Values::named(arg, value(), parse_wrap_mode, kWrapNames);
     } else if (arg == "--wrap-s") {
-      wrap_s = parse_named(arg, value(), parse_wrap_mode, kWrapNames);
+      wrap_s = Values::named(arg, value(), parse_wrap_mode, kWrapNames);
     } else if (arg == "--wrap-t") {
-      wrap_t = parse_named(arg, value(), parse_wrap_mode, kWrapNames);
+      wrap_t = Values::named(arg, value(), parse_wrap_mode, kWrapNames);
     } else if (arg == "--lod") {
-      sampler.lod = parse_named(arg, value(), parse_lod_formula, "exact or max_axis");
+      sampler.lod = Values::named(arg, value(), parse_lod_formula, "exact or max_axis");
     } else if (arg == "--lod-bias") {
-      sampler.lod_bias = parse_finite_float(arg, value());
+      sampler.lod_bias = Values::number(arg, value());
     } else if (arg == "--max-aniso") {
-      sampler.max_anisotropy = parse_int_in(arg, value(), 1, edgewise::kMaxAnisotropyLimit);
+      sampler.max_anisotropy = Values::integer_in(arg, value(), 1, edgewise::kMaxAnisotropyLimit);
     } else if (arg == "--taps") {
-      sampler.supersample_taps = parse_int_in(arg, value(), 1, edgewise::kMaxSupersampleTaps);
+      sampler.supersample_taps = Values::integer_in(arg, value(), 1, edgewise::kMaxSupersampleTaps);
     } else if (arg == "--pyramid") {
-      settings.pyramid = parse_named(arg, value(), parse_pyramid_filter, "box or lanczos3");
+      settings.pyramid = Values::named(arg, value(), parse_pyramid_filter, "box or lanczos3");
     } else if (arg == "--srgb") {
       settings.srgb = true;
     } else if (arg == "--isa") {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "option_values.hpp"
 #include "texture_quality/usage_error.hpp"
 
 namespace edgewise::texture_quality {
@@ -58,31 +59,18 @@ const std::string_view kUsage =
 
 namespace {
 
-std::string quoted(std::string_view text) {
-  return "'" + std::string(text) + "'";
-}
-
-bool parse_int(std::string_view text, std::int64_t& value) {
-  const char* last = text.data() + text.size();
-  const auto [end, ec] = std::from_chars(text.data(), last, value);
-  return ec == std::errc() && end == last && !text.empty();
-}
-
-int parse_int_in(std::string_view option, std::string_view text, int lo, int hi) {
-  std::int64_t value = 0;
-  if (!parse_int(text, value) || value < lo || value > hi) {
-    throw UsageError(std::string(option) + " " + quoted(text) + " is not an integer in " +
-                     std::to_string(lo) + ".." + std::to_string(hi));
-  }
-  return static_cast<int>(value);
-}
+using tools::quoted;
+using Values = tools::OptionValues<UsageError>;
 
 void parse_size(std::string_view text, std::int32_t& width, std::int32_t& height) {
   const std::size_t x = text.find('x');
-  std::int64_t w = 0, h = 0;
-  if (x == std::string_view::npos || !parse_int(text.substr(0, x), w) ||
-      !parse_int(text.substr(x + 1), h) || w < 1 || h < 1 || w > kMaxScreenSide ||
-      h > kMaxScreenSide || w * h > kMaxPixels) {
+  const std::optional<std::int64_t> parsed_w =
+      x == std::string_view::npos ? std::nullopt : tools::parse_integer(text.substr(0, x));
+  const std::optional<std::int64_t> parsed_h =
+      x == std::string_view::npos ? std::nullopt : tools::parse_integer(text.substr(x + 1));
+  const std::int64_t w = parsed_w.value_or(0), h = parsed_h.value_or(0);
+  if (!parsed_w || !parsed_h || w < 1 || h < 1 || w > kMaxScreenSide || h > kMaxScreenSide ||
+      w * h > kMaxPixels) {
     throw UsageError("--size " + quoted(text) + " is not WxH with W, H in 1.." +
                      std::to_string(kMaxScreenSide) + " and W H <= " + std::to_string(kMaxPixels));
   }
@@ -133,7 +121,7 @@ QualitySettings parse_command_line(std::span<char* const> args) {
       parse_size(value(), settings.width, settings.height);
     } else if (arg == "--texture-size") {
       const std::string_view text = value();
-      settings.texture_size = parse_int_in(arg, text, 2 * kCheckerSquareTexels, 1 << 15);
+      settings.texture_size = Values::integer_in(arg, text, 2 * kCheckerSquareTexels, 1 << 15);
       if (settings.texture_size % (2 * kCheckerSquareTexels) != 0) {
         throw UsageError("--texture-size " + quoted(text) + " is not a multiple of " +
                          std::to_string(2 * kCheckerSquareTexels));
@@ -146,7 +134,7 @@ QualitySettings parse_command_line(std::span<char* const> args) {
       }
       settings.pyramid = *pyramid;
     } else if (arg == "--max-aniso") {
-      settings.max_anisotropy = parse_int_in(arg, value(), 1, kMaxAnisotropyLimit);
+      settings.max_anisotropy = Values::integer_in(arg, value(), 1, kMaxAnisotropyLimit);
     } else if (arg == "--isa") {
       try {
         add_isa(parse_supported_isa(value()));
@@ -160,7 +148,7 @@ QualitySettings parse_command_line(std::span<char* const> args) {
     } else if (arg == "--draw") {
       settings.draw = true;
     } else if (arg == "--repeat") {
-      settings.repetitions = parse_int_in(arg, value(), 1, kMaxRepetitions);
+      settings.repetitions = Values::integer_in(arg, value(), 1, kMaxRepetitions);
     } else if (arg == "--cache") {
       settings.cache_directory = path_value();
     } else if (arg == "--csv") {
