@@ -136,7 +136,9 @@ void print_preamble(const QualitySettings& settings, const std::string& size,
   std::cout << "edgewise-texture-quality: " << size << " screen, ISA " << isa_list(isas)
             << (settings.peer ? " and OpenImageIO's TextureSystem" : "") << ", "
             << pyramid_filter_name(settings.pyramid) << " pyramid, max anisotropy "
-            << settings.max_anisotropy << ", repeat wrap\n"
+            << settings.methods.max_anisotropy << ", level of detail "
+            << lod_formula_name(settings.methods.lod) << " with bias " << settings.methods.lod_bias
+            << ", repeat wrap\n"
             << "  errors: against ground truth, linear units over R, G, B; front: '*' marks the "
                "Pareto front (lowest RMSE for its time)\n"
             << "  times: this tool's, the median of " << settings.repetitions
@@ -157,7 +159,7 @@ int run(std::span<char* const> args) {
     return 0;
   }
   const std::vector<Isa> isas = resolve_isas(settings);
-  const std::vector<FilterMethod> methods = filter_methods(settings.max_anisotropy);
+  const std::vector<FilterMethod> methods = filter_methods(settings.methods);
 
   // Every output is checked before the first ground truth, which may take minutes.
   const std::filesystem::path cache = settings.cache_directory

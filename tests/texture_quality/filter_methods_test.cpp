@@ -1,16 +1,32 @@
-// The scored settings: every filter, the denser supersampling grid, the anisotropy asked for.
+// The scored settings: every filter (or those asked for), the denser supersampling grid, the
+// anisotropy, level-of-detail formula and bias asked for, each named.
 #include "texture_quality/filter_methods.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <set>
+#include <span>
 #include <string>
+#include <vector>
+
+#include "edgewise/texture.hpp"
 
 namespace edgewise::texture_quality {
 namespace {
 
+MethodSettings settings_with(int max_anisotropy, LodFormula lod = LodFormula::exact,
+                             float lod_bias = 0.0f) {
+  MethodSettings settings;
+  settings.max_anisotropy = max_anisotropy;
+  settings.lod = lod;
+  settings.lod_bias = lod_bias;
+  return settings;
+}
+
 TEST(FilterMethods, EveryFilterWithUniqueNames) {
-  const std::vector<FilterMethod> methods = filter_methods(16);
+  const std::vector<FilterMethod> methods = filter_methods(MethodSettings{});
   std::set<std::string> names;
   for (const FilterMethod& method : methods)
     names.insert(method.name);
@@ -30,7 +46,7 @@ TEST(FilterMethods, EveryFilterWithUniqueNames) {
 
 TEST(FilterMethods, SupersampleAtTheDefaultAndTheDenseGrid) {
   std::set<int> taps;
-  for (const FilterMethod& method : filter_methods(16)) {
+  for (const FilterMethod& method : filter_methods(MethodSettings{})) {
     if (method.options.filter == TextureFilter::supersample) {
       taps.insert(method.options.supersample_taps);
       EXPECT_EQ(method.name, "supersample_" + std::to_string(method.options.supersample_taps) +
@@ -41,7 +57,7 @@ TEST(FilterMethods, SupersampleAtTheDefaultAndTheDenseGrid) {
 }
 
 TEST(FilterMethods, AnisotropyGoesIntoTheOptionsAndTheNames) {
-  for (const FilterMethod& method : filter_methods(8)) {
+  for (const FilterMethod& method : filter_methods(settings_with(8))) {
     EXPECT_EQ(method.options.max_anisotropy, 8);
     EXPECT_EQ(method.options.wrap_s, WrapMode::repeat);
     EXPECT_EQ(method.options.wrap_t, WrapMode::repeat);
@@ -51,6 +67,80 @@ TEST(FilterMethods, AnisotropyGoesIntoTheOptionsAndTheNames) {
     if (method.options.filter == TextureFilter::ewa) {
       EXPECT_EQ(method.name, "ewa_8x");
     }
+  }
+}
+
+TEST(FilterMethods, OnlyTheFiltersAskedFor) {
+  MethodSettings settings;
+  settings.filters = {TextureFilter::ewa, TextureFilter::supersample};
+  const std::vector<FilterMethod> methods = filter_methods(settings);
+  ASSERT_EQ(methods.size(), 3u);  // in TextureFilter order, supersample at both grids
+  EXPECT_EQ(methods[0].name, "supersample_4x4");
+  EXPECT_EQ(methods[1].name, "supersample_8x8");
+  EXPECT_EQ(methods[2].name, "ewa_16x");
+}
+
+// Every method carries the formula and bias; only those whose results depend on them say so in
+// their names, so that a scores file with several settings keeps its rows apart.
+TEST(FilterMethods, LevelOfDetailSettingsInTheOptionsAndTheNamesOfTheFiltersReadingThem) {
+  const std::vector<FilterMethod> methods =
+      filter_methods(settings_with(16, LodFormula::max_axis, -0.5f));
+  std::set<std::string> names;
+  for (const FilterMethod& method : methods) {
+    names.insert(method.name);
+    EXPECT_EQ(method.options.lod, LodFormula::max_axis);
+    EXPECT_EQ(method.options.lod_bias, -0.5f);
+  }
+  EXPECT_EQ(names.size(), methods.size());
+  for (const char* name :
+       {"nearest", "bilinear", "supersample_8x8", "summed_area", "mip_nearest_max_axis_bias-0.5",
+        "trilinear_max_axis_bias-0.5", "ripmap_bias-0.5", "anisotropic_16x_max_axis_bias-0.5",
+        "ewa_16x_bias-0.5"}) {
+    EXPECT_EQ(names.count(name), 1u) << name;
+  }
+  const std::vector<FilterMethod> biased =
+      filter_methods(settings_with(16, LodFormula::exact, 0.25f));
+  EXPECT_EQ(std::count_if(biased.begin(), biased.end(),
+                          [](const FilterMethod& m) { return m.name == "trilinear_bias0.25"; }),
+            1);
+}
+
+// Whether a filter reads the settings, checked against the sampler itself: a bias of 2 changes
+// a minified query's result exactly for the filters said to read it, and the max-of-axes formula
+// (sqrt(2) lower on a diagonal footprint) exactly for those said to read the formula.
+TEST(FilterMethods, ReadsLevelOfDetailAgreesWithTheSampler) {
+  constexpr int kSide = 64;
+  std::vector<std::uint8_t> texels(kSide * kSide * 4);
+  for (int i = 0; i < kSide * kSide; ++i) {
+    const std::uint8_t value = static_cast<std::uint8_t>((i * 37 + (i / kSide) * 11) % 256);
+    for (int k = 0; k < 4; ++k)
+      texels[4 * i + k] = static_cast<std::uint8_t>(value + 50 * k);
+  }
+  const Texture texture = Texture::from_rgba8(
+      kSide, kSide, texels, ColorEncoding::linear,
+      TextureBuild{PyramidFilter::box, /*ripmaps=*/true, /*summed_area_table=*/true});
+  // A diagonal footprint of 3 x 5 texels: a fractional level, anisotropy below 2.
+  const TextureQuery query{0.3f, 0.6f, 3.0f / kSide, 3.0f / kSide, -5.0f / kSide, 5.0f / kSide};
+  const auto result = [&](const SamplerOptions& options) {
+    Vec4 out;
+    sample(texture, options, std::span(&query, 1), std::span(&out, 1), Isa::reference);
+    return out;
+  };
+  for (int f = 0; f <= static_cast<int>(TextureFilter::ewa); ++f) {
+    SamplerOptions options;
+    options.filter = static_cast<TextureFilter>(f);
+    const Vec4 plain = result(options);
+    SamplerOptions biased = options;
+    biased.lod_bias = 2.0f;
+    SamplerOptions max_axis = options;
+    max_axis.lod = LodFormula::max_axis;
+    const auto differs = [](const Vec4& a, const Vec4& b) {
+      return a.x != b.x || a.y != b.y || a.z != b.z || a.w != b.w;
+    };
+    EXPECT_EQ(differs(result(biased), plain), reads_lod_bias(options.filter))
+        << texture_filter_name(options.filter);
+    EXPECT_EQ(differs(result(max_axis), plain), reads_lod_formula(options.filter))
+        << texture_filter_name(options.filter);
   }
 }
 

@@ -84,7 +84,7 @@ TEST(Quality, ReferenceScoresWithinTheSamplerBoundOfTheFastPath) {
         << row.texture << "/" << row.view << "/" << row.method;
     ++compared;
   }
-  EXPECT_EQ(compared, kSceneCount * static_cast<int>(filter_methods(16).size()));
+  EXPECT_EQ(compared, kSceneCount * static_cast<int>(filter_methods(MethodSettings{}).size()));
 }
 
 // The second run also draws each view (--draw). With analytic derivatives the drawn queries are
@@ -97,7 +97,7 @@ TEST(Quality, ReferenceScoresWithinTheSamplerBoundOfTheFastPath) {
 TEST(Quality, DrawnViewScoresLikeTheSampledView) {
   const std::vector<ScoreRow> reference = second_scores();
   int compared = 0;
-  for (const FilterMethod& method : filter_methods(16)) {
+  for (const FilterMethod& method : filter_methods(MethodSettings{})) {
     for (const char* derivatives : {"quad", "analytic"}) {
       for (const char* texture : {"checkerboard", "sinusoids"}) {
         for (const char* view : {"ground_plane", "magnification"}) {
@@ -115,7 +115,7 @@ TEST(Quality, DrawnViewScoresLikeTheSampledView) {
       }
     }
   }
-  EXPECT_EQ(compared, 4 * (static_cast<int>(filter_methods(16).size()) - 3));
+  EXPECT_EQ(compared, 4 * (static_cast<int>(filter_methods(MethodSettings{}).size()) - 3));
 }
 
 }  // namespace

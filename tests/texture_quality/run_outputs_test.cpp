@@ -33,6 +33,26 @@ TEST(FirstRun, ComputedEveryGroundTruth) {
   EXPECT_EQ(count_occurrences(out, "ground truth read from"), 0) << out;
 }
 
+// Only the filters asked for, in filter order, named with their settings, and scored with them:
+// the bias moves trilinear's level by more than half a level here, so its error changes.
+TEST(ChosenRun, ScoresTheChosenFiltersWithTheirSettings) {
+  const std::vector<ScoreRow> rows = chosen_scores();
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].method, "trilinear_max_axis_bias-0.5");
+  EXPECT_EQ(rows[1].method, "ewa_16x_bias-0.5");
+  for (const ScoreRow& row : rows) {
+    EXPECT_EQ(row.texture, "checkerboard");
+    EXPECT_EQ(row.view, "ground_plane");
+    EXPECT_TRUE(std::isfinite(row.rmse)) << row.method;
+  }
+  const std::vector<ScoreRow> first = first_scores();
+  const ScoreRow plain =
+      find_row(first, "checkerboard", "ground_plane", "trilinear", first_run_isa(first));
+  EXPECT_NE(rows[0].rmse, plain.rmse);
+  const std::string out = file_text(runs_directory() / "chosen.out");
+  EXPECT_EQ(count_occurrences(out, "level of detail max_axis with bias -0.5"), 1) << out;
+}
+
 TEST(SecondRun, ReadEveryGroundTruthFromTheCache) {
   const std::string out = file_text(runs_directory() / "second.out");
   EXPECT_EQ(count_occurrences(out, "ground truth read from"), kSceneCount) << out;
@@ -42,7 +62,7 @@ TEST(SecondRun, ReadEveryGroundTruthFromTheCache) {
 TEST(Scores, EveryFilterInEverySceneWithFiniteFigures) {
   const std::vector<ScoreRow> rows = first_scores();
   const std::string isa = first_run_isa(rows);
-  const std::vector<FilterMethod> methods = filter_methods(16);
+  const std::vector<FilterMethod> methods = filter_methods(MethodSettings{});
   EXPECT_EQ(rows.size(), kSceneCount * (methods.size() + std::size(kPeerModeNames)));
   for (const char* texture : kTextures) {
     for (const char* view : kViews) {

@@ -42,6 +42,10 @@ std::vector<ScoreRow> second_scores() {
   return scores("second.csv");
 }
 
+std::vector<ScoreRow> chosen_scores() {
+  return scores("chosen.csv");
+}
+
 std::vector<ScoreRow> scene_rows(const std::vector<ScoreRow>& rows, std::string_view texture,
                                  std::string_view view) {
   std::vector<ScoreRow> selected;

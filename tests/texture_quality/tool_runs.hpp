@@ -1,7 +1,7 @@
 // The outputs of edgewise-texture-quality's runs made by this directory's CTest fixtures
 // (CMakeLists.txt): a first run that computes every ground truth into an empty cache, with the
-// active ISA, OpenImageIO's peer and pictures, and a second run of the reference that finds them
-// in the cache.
+// active ISA, OpenImageIO's peer and pictures, a second run of the reference that finds them
+// in the cache, and a run of two chosen filters with other level-of-detail settings.
 #pragma once
 
 #include <filesystem>
@@ -26,9 +26,11 @@ inline const std::filesystem::path& runs_directory() {
 // The whole file; fails the test (and returns "") when it cannot be read.
 std::string file_text(const std::filesystem::path& path);
 
-// The scores of the first run (first.csv) and of the second (second.csv).
+// The scores of the first run (first.csv), of the second (second.csv) and of the run of chosen
+// filters with the max-of-axes formula and a bias of -0.5 (chosen.csv).
 std::vector<ScoreRow> first_scores();
 std::vector<ScoreRow> second_scores();
+std::vector<ScoreRow> chosen_scores();
 
 // The rows of one scene, in file order.
 std::vector<ScoreRow> scene_rows(const std::vector<ScoreRow>& rows, std::string_view texture,

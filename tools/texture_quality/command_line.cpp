@@ -28,7 +28,12 @@ const std::string_view kUsage =
     "\n"
     "Methods: every edgewise filter, supersample at 4x4 and 8x8 taps, and OpenImageIO's\n"
     "TextureSystem on the same queries (closest, bilinear, bicubic, trilinear, anisotropic16).\n"
+    "  --filter NAME          score this filter (repeatable; default every filter)\n"
     "  --max-aniso N          anisotropic probes, EWA eccentricity: 1..64 (default 16)\n"
+    "  --lod exact|max_axis   level-of-detail formula (default exact)\n"
+    "  --lod-bias F           added to the level of detail (default 0); the methods\n"
+    "                         that read a formula or bias other than the default name it:\n"
+    "                         trilinear_max_axis_bias-0.5\n"
     "  --isa NAME             the kernel (repeatable; default: the best ISA of this CPU, or\n"
     "                         EDGEWISE_ISA)\n"
     "  --reference            the scalar double-precision reference (with or without --isa)\n"
@@ -133,8 +138,20 @@ QualitySettings parse_command_line(std::span<char* const> args) {
         throw UsageError("unknown --pyramid value " + quoted(text) + "; expected box or lanczos3");
       }
       settings.pyramid = *pyramid;
+    } else if (arg == "--filter") {
+      const TextureFilter filter = Values::named(arg, value(), parse_texture_filter,
+                                                 "a filter name (edgewise-sample --help)");
+      std::vector<TextureFilter>& filters = settings.methods.filters;
+      if (std::find(filters.begin(), filters.end(), filter) != filters.end()) {
+        throw UsageError("filter " + quoted(texture_filter_name(filter)) + " given twice");
+      }
+      filters.push_back(filter);
     } else if (arg == "--max-aniso") {
-      settings.max_anisotropy = Values::integer_in(arg, value(), 1, kMaxAnisotropyLimit);
+      settings.methods.max_anisotropy = Values::integer_in(arg, value(), 1, kMaxAnisotropyLimit);
+    } else if (arg == "--lod") {
+      settings.methods.lod = Values::named(arg, value(), parse_lod_formula, "exact or max_axis");
+    } else if (arg == "--lod-bias") {
+      settings.methods.lod_bias = Values::number(arg, value());
     } else if (arg == "--isa") {
       try {
         add_isa(parse_supported_isa(value()));

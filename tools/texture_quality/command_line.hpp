@@ -12,6 +12,7 @@
 
 #include "edgewise/isa.hpp"
 #include "edgewise/texture.hpp"
+#include "texture_quality/filter_methods.hpp"
 #include "texture_quality/scenes.hpp"
 
 namespace edgewise::texture_quality {
@@ -31,7 +32,7 @@ struct QualitySettings {
   std::vector<SceneTexture> textures{std::begin(kSceneTextures), std::end(kSceneTextures)};
   std::vector<SceneView> views{std::begin(kSceneViews), std::end(kSceneViews)};
   PyramidFilter pyramid = PyramidFilter::box;  // --pyramid
-  int max_anisotropy = 16;                     // --max-aniso
+  MethodSettings methods;                      // --filter, --lod, --lod-bias, --max-aniso
   std::vector<Isa> isas;                       // --isa (repeatable), --reference; empty: active
   bool peer = true;                            // --no-peer turns OpenImageIO's peer off
   bool draw = false;    // --draw: every method also drawn by draw(), quad and analytic derivatives

@@ -1,6 +1,6 @@
-// The edgewise filter settings that are scored: every TextureFilter once with the default
-// options, the anisotropic ones at the chosen max_anisotropy, and supersampling also at a denser
-// grid, to show what more taps buy.
+// The edgewise filter settings that are scored: every TextureFilter (or those asked for) with the
+// level-of-detail formula and bias asked for, the anisotropic ones at the chosen max_anisotropy,
+// and supersampling also at a denser grid, to show what more taps buy.
 #pragma once
 
 #include <string>
@@ -14,12 +14,24 @@ namespace edgewise::texture_quality {
 inline constexpr int kDenseSupersampleTaps = 8;
 
 struct FilterMethod {
-  std::string name;  // the filter's name, with its setting where it has one: "ewa_16x"
+  std::string name;  // the filter's name, with its settings where it has them: "ewa_16x"
   SamplerOptions options;
 };
 
-// In TextureFilter order; repeat wrap on both axes, exact level of detail, no bias.
-// `max_anisotropy` must lie in 1 .. kMaxAnisotropyLimit.
-std::vector<FilterMethod> filter_methods(int max_anisotropy);
+// What the command line sets for every method.
+struct MethodSettings {
+  int max_anisotropy = 16;  // 1 .. kMaxAnisotropyLimit
+  LodFormula lod = LodFormula::exact;
+  float lod_bias = 0.0f;               // finite
+  std::vector<TextureFilter> filters;  // empty: every filter
+};
+
+// Whether a filter's result depends on SamplerOptions::lod_bias, and on SamplerOptions::lod.
+bool reads_lod_bias(TextureFilter filter);
+bool reads_lod_formula(TextureFilter filter);
+
+// In TextureFilter order; repeat wrap on both axes. A method whose filter reads a formula or bias
+// other than the default names it: "trilinear_max_axis_bias-0.5".
+std::vector<FilterMethod> filter_methods(const MethodSettings& settings);
 
 }  // namespace edgewise::texture_quality
