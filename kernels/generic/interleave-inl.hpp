@@ -1,5 +1,6 @@
-// Four channel batches stored as interleaved RGBA records (lane l's four values at out + 4 l):
-// a 4 x 4 transpose per group of four lanes instead of sixteen scalar moves per lane group.
+// Batches to and from interleaved records: four channel batches stored as RGBA records (lane l's
+// four values at out + 4 l), and six-float query records loaded as one batch per field; 4 x 4
+// transposes per group of four lanes instead of a scalar move per lane and value.
 #pragma once
 
 #include <cstddef>
@@ -58,6 +59,60 @@ inline void store_interleaved(const xsimd::batch<float, Arch> (&channels)[4], fl
   {
     static_assert(!sizeof(Arch), "store_interleaved: no implementation for this architecture");
   }
+}
+
+// Four floats of record `record` (six floats each) from float `offset` on, per 4-lane block:
+// block h holds record + 4 h.
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<float, Arch> record_row(const float* in, int record,
+                                                                   int offset) {
+  using Floats = xsimd::batch<float, Arch>;
+  const float* first = in + 6 * record + offset;
+#if defined(__AVX2__)
+  if constexpr (Floats::size == 8) {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(first)),
+                                _mm_loadu_ps(first + 6 * 4), 1);
+  } else
+#endif
+  {
+    static_assert(Floats::size == 4, "record_row: 4 or 8 lanes");
+    return Floats::load_unaligned(first);
+  }
+}
+
+// Records of six floats, one per lane, loaded as six batches (field f of lane l from
+// in[6 l + f]): in must hold 6 * lanes floats. Within each 4-lane block, pairs of lanes are
+// interleaved as floats, then pairs of pairs as doubles (the same unpacks on every ISA).
+template <class Arch>
+[[gnu::always_inline]] inline void load_records6(const float* in,
+                                                 xsimd::batch<float, Arch> (&fields)[6]) {
+  using Floats = xsimd::batch<float, Arch>;
+  using Doubles = xsimd::batch<double, Arch>;
+  const auto pairs_low = [](Floats a, Floats b) {
+    return xsimd::bitwise_cast<Floats>(
+        xsimd::zip_lo(xsimd::bitwise_cast<Doubles>(a), xsimd::bitwise_cast<Doubles>(b)));
+  };
+  const auto pairs_high = [](Floats a, Floats b) {
+    return xsimd::bitwise_cast<Floats>(
+        xsimd::zip_hi(xsimd::bitwise_cast<Doubles>(a), xsimd::bitwise_cast<Doubles>(b)));
+  };
+  Floats front[4], back[4];  // fields 0..3 and 2..5 of records 0..3 (and 4..7)
+  for (int i = 0; i < 4; ++i) {
+    front[i] = record_row<Arch>(in, i, 0);
+    back[i] = record_row<Arch>(in, i, 2);
+  }
+  const Floats f01_a = xsimd::zip_lo(front[0], front[1]);  // s0 s1 t0 t1
+  const Floats f01_b = xsimd::zip_lo(front[2], front[3]);  // s2 s3 t2 t3
+  const Floats f23_a = xsimd::zip_hi(front[0], front[1]);  // fields 2, 3 of records 0, 1
+  const Floats f23_b = xsimd::zip_hi(front[2], front[3]);
+  const Floats f45_a = xsimd::zip_hi(back[0], back[1]);  // fields 4, 5 of records 0, 1
+  const Floats f45_b = xsimd::zip_hi(back[2], back[3]);
+  fields[0] = pairs_low(f01_a, f01_b);
+  fields[1] = pairs_high(f01_a, f01_b);
+  fields[2] = pairs_low(f23_a, f23_b);
+  fields[3] = pairs_high(f23_a, f23_b);
+  fields[4] = pairs_low(f45_a, f45_b);
+  fields[5] = pairs_high(f45_a, f45_b);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -12,6 +12,10 @@
 #include "summed_area-inl.hpp"
 #include "texture_filters-inl.hpp"
 
+// For the filter lambdas: inlined into their loops (GCC otherwise calls each once per batch,
+// passing the queries and results through memory).
+#define EDGEWISE_INLINE_LAMBDA __attribute__((always_inline))
+
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 namespace sample_detail {
@@ -20,12 +24,6 @@ using Arch = EDGEWISE_ARCH;
 using Floats = xsimd::batch<float, Arch>;
 using Ints = xsimd::batch<std::int32_t, Arch>;
 constexpr std::size_t kLanes = Floats::size;
-
-// 0, 1, 2, ... per lane.
-[[gnu::always_inline]] inline Ints lane_index() {
-  alignas(64) static constexpr std::int32_t kIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-  return Ints::load_aligned(kIndex);
-}
 
 // Where queries come from and results go: records (TextureQuery, Vec4) or one array per field
 // (QueryFields, ResultChannels). load(first, n) returns queries [first, first + n) as batches,
@@ -36,12 +34,10 @@ struct RecordQueries {
   [[gnu::always_inline]] QueryLanes<Arch> load(std::size_t first, std::size_t count) const {
     static_assert(sizeof(TextureQuery) == 6 * sizeof(float));
     const float* fields = &queries[first].s;
-    if (count == kLanes) {  // a whole batch: one strided load per lane and field
-      const Ints stride = Ints(6) * lane_index();
-      return {
-          load_lanes_float<Arch>(fields + 0, stride), load_lanes_float<Arch>(fields + 1, stride),
-          load_lanes_float<Arch>(fields + 2, stride), load_lanes_float<Arch>(fields + 3, stride),
-          load_lanes_float<Arch>(fields + 4, stride), load_lanes_float<Arch>(fields + 5, stride)};
+    if (count == kLanes) {  // a whole batch: transposed in registers
+      Floats lanes[6];
+      load_records6<Arch>(fields, lanes);
+      return {lanes[0], lanes[1], lanes[2], lanes[3], lanes[4], lanes[5]};
     }
     alignas(64) float lanes[6][kLanes];
     for (std::size_t l = 0; l < kLanes; ++l) {
@@ -188,39 +184,45 @@ void sample_with(const detail::TextureDescription& texture, const SamplerOptions
   switch (options.filter) {
     case TextureFilter::nearest:
       return sample_all<false>(texture, queries, count, out,
-                               [&](const Q& q) { return f.nearest(q.s, q.t); });
+                               [&](const Q& q)
+                                   EDGEWISE_INLINE_LAMBDA { return f.nearest(q.s, q.t); });
     case TextureFilter::bilinear:
       return sample_all<false>(texture, queries, count, out,
-                               [&](const Q& q) { return f.bilinear0(q.s, q.t); });
+                               [&](const Q& q)
+                                   EDGEWISE_INLINE_LAMBDA { return f.bilinear0(q.s, q.t); });
     case TextureFilter::bicubic_catmull_rom:
       return sample_all<false>(texture, queries, count, out,
-                               [&](const Q& q) { return f.bicubic(q.s, q.t, true); });
+                               [&](const Q& q)
+                                   EDGEWISE_INLINE_LAMBDA { return f.bicubic(q.s, q.t, true); });
     case TextureFilter::bicubic_bspline:
       return sample_all<false>(texture, queries, count, out,
-                               [&](const Q& q) { return f.bicubic(q.s, q.t, false); });
+                               [&](const Q& q)
+                                   EDGEWISE_INLINE_LAMBDA { return f.bicubic(q.s, q.t, false); });
     case TextureFilter::mip_nearest:
-      return sample_all<true>(texture, queries, count, out, [&](const Q& q) {
+      return sample_all<true>(texture, queries, count, out, [&](const Q& q) EDGEWISE_INLINE_LAMBDA {
         return f.mip_nearest(q.s, q.t, f.level_of_detail(q));
       });
     case TextureFilter::trilinear:
-      return sample_all<true>(texture, queries, count, out, [&](const Q& q) {
+      return sample_all<true>(texture, queries, count, out, [&](const Q& q) EDGEWISE_INLINE_LAMBDA {
         return f.trilinear(q.s, q.t, f.level_of_detail(q));
       });
     case TextureFilter::supersample:
       return sample_all<true>(texture, queries, count, out,
-                              [&](const Q& q) { return f.supersample(q); });
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.supersample(q); });
     case TextureFilter::ripmap:
       return sample_all<true>(texture, queries, count, out,
-                              [&](const Q& q) { return f.ripmap(q); });
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.ripmap(q); });
     case TextureFilter::anisotropic:
       return sample_all<true>(texture, queries, count, out,
-                              [&](const Q& q) { return f.anisotropic(q); });
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.anisotropic(q); });
     case TextureFilter::ewa:
-      return sample_all<true>(texture, queries, count, out, [&](const Q& q) { return f.ewa(q); });
+      return sample_all<true>(texture, queries, count, out,
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.ewa(q); });
     case TextureFilter::summed_area: {
       const SummedAreaBox<Arch> box(texture, options);
-      return sample_all<true, false>(texture, queries, count, out,
-                                     [&](const Q& q) { return summed_area_lanes(box, q); });
+      return sample_all<true, false>(
+          texture, queries, count, out,
+          [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return summed_area_lanes(box, q); });
     }
   }
 }

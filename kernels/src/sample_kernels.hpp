@@ -11,6 +11,10 @@
 
 namespace edgewise::detail {
 
+// Every LevelTable array can be read up to this many entries (those past `count` repeat the
+// last), so that kernels can hold a whole mip chain (at most 16 levels) in registers.
+inline constexpr int kLevelTableReadable = 16;
+
 // Sizes and starts of a set of levels, in texels from the start of the texture's storage.
 // Starts fit int32: a texture has at most 2^30 texels in level 0 and 4/3 of that in all levels.
 struct LevelTable {

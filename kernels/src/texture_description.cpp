@@ -57,11 +57,17 @@ FlatTexture::LevelArrays FlatTexture::level_arrays(std::span<const TextureLevel>
     arrays.height.push_back(level.height);
     arrays.start.push_back(static_cast<std::int32_t>(level.offset / texel_bytes));
   }
+  // Readable to kLevelTableReadable entries; table() keeps the true count.
+  arrays.count = static_cast<std::int32_t>(levels.size());
+  for (std::vector<std::int32_t>* array : {&arrays.width, &arrays.height, &arrays.start}) {
+    const std::int32_t last = array->empty() ? 0 : array->back();
+    if (array->size() < kLevelTableReadable) array->resize(kLevelTableReadable, last);
+  }
   return arrays;
 }
 
 LevelTable FlatTexture::LevelArrays::table() const {
-  return {width.data(), height.data(), start.data(), static_cast<std::int32_t>(width.size())};
+  return {width.data(), height.data(), start.data(), count};
 }
 
 FlatTexture::FlatTexture(const Texture& texture) {

@@ -34,6 +34,7 @@ class FlatTexture {
   // Level sizes and starts (in texels) as the kernels read them.
   struct LevelArrays {
     std::vector<std::int32_t> width, height, start;
+    std::int32_t count = 0;
     LevelTable table() const;
   };
   static LevelArrays level_arrays(std::span<const TextureLevel> levels, std::size_t texel_bytes);
