@@ -31,21 +31,7 @@ struct LevelLanes {
   xsimd::batch<float, Arch> widthf, heightf;
 };
 
-// base[index] per lane (AVX2 has a gather instruction; xsimd 8.1 never emits it).
 #define EDGEWISE_INLINE [[gnu::always_inline]] inline
-
-template <class Arch>
-EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> gather_int32(
-    const std::int32_t* base, xsimd::batch<std::int32_t, Arch> index) {
-#if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    return _mm256_i32gather_epi32(reinterpret_cast<const int*>(base), index, 4);
-  } else
-#endif
-  {
-    return xsimd::batch<std::int32_t, Arch>::gather(base, index);
-  }
-}
 
 // base[index] per lane by one load per lane, for texels: on AMD Zen 3 the AVX2 gather
 // instruction is slower than eight loads there (bilinear on the ground-plane stream: 34 M/s with
@@ -80,6 +66,21 @@ EDGEWISE_INLINE xsimd::batch<float, Arch> load_lanes_float(const float* base,
   return load_lanes<Arch>(base, index);
 }
 
+// base[index] per lane with the AVX2 gather instruction (xsimd 8.1 never emits it); a load
+// per lane elsewhere.
+template <class Arch>
+EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> gather_int32(
+    const std::int32_t* base, xsimd::batch<std::int32_t, Arch> index) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    return _mm256_i32gather_epi32(reinterpret_cast<const int*>(base), index, 4);
+  } else
+#endif
+  {
+    return load_lanes<Arch>(base, index);
+  }
+}
+
 template <class Arch>
 EDGEWISE_INLINE xsimd::batch<float, Arch> gather_float(const float* base,
                                                        xsimd::batch<std::int32_t, Arch> index) {
@@ -89,7 +90,7 @@ EDGEWISE_INLINE xsimd::batch<float, Arch> gather_float(const float* base,
   } else
 #endif
   {
-    return xsimd::batch<float, Arch>::gather(base, index);
+    return load_lanes<Arch>(base, index);
   }
 }
 
