@@ -1,13 +1,86 @@
 # shellcheck shell=bash
-# Makes sure the Debian packages a script needs are installed (sourced by tools/demo and
-# tools/check).
+# The Debian 12 packages each command needs, and the function that installs them (sourced by
+# tools/demo and tools/check).
+#
+# One list for tools/demo and one per stage of tools/check; tools/check installs the lists of the
+# stages it runs. Each list names what its command uses itself, with the reason beside it, and
+# leaves what those packages depend on to apt. README.md's "Requirements" table shows the same
+# lists; tests/requirements compares the two. The `fresh` stage proves them: each command, run
+# first on a minimal Debian root, must pass with what it installed itself.
 #
 # Missing packages are installed with apt-get when running as root. Otherwise the exact command
 # to run is printed and the script stops, so nothing is built against a half-installed system.
 
-# Packages every build needs: compilers, the build system and xsimd (the library's only dependency).
-# shellcheck disable=SC2034 # used by the scripts that source this file
-EDGEWISE_BUILD_PACKAGES=(build-essential cmake ninja-build libxsimd-dev)
+# shellcheck disable=SC2034 # the lists are read by the scripts that source this file
+
+# tools/demo: a Release build of the library and the tools, then edgewise-render and
+# edgewise-demo.
+EDGEWISE_DEMO_PACKAGES=(
+  g++                  # GCC 12, the C++20 compiler, with binutils (linker, objdump, nm)
+  cmake                # the build system (3.22 or newer)
+  ninja-build          # the generator the scripts configure with
+  libxsimd-dev         # the library's only dependency: the SIMD batches its kernels are written in
+  libopenimageio-dev   # image files: the tools write PNG images and read textures
+  openimageio-tools    # OpenImageIO's CMake package imports its tools (/usr/bin/iconvert...): no configure without
+  libtinyobjloader-dev # edgewise-render reads OBJ meshes (tools/scene)
+)
+
+# tools/check, stage by stage.
+EDGEWISE_CHECK_FORMAT_PACKAGES=(
+  clang-format # the format stage's formatter (clang-format 14)
+)
+# The host build is the demo's build plus the test suite and the benchmarks.
+EDGEWISE_CHECK_HOST_PACKAGES=(
+  "${EDGEWISE_DEMO_PACKAGES[@]}"
+  libgtest-dev     # GoogleTest: the test suite
+  libbenchmark-dev # Google Benchmark: edgewise-bench, built with everything else
+)
+# The host build, then objdump and nm (binutils, from g++) read its objects.
+EDGEWISE_CHECK_ISA_OBJECTS_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")
+EDGEWISE_CHECK_AARCH64_PACKAGES=(
+  cmake                 # the build system
+  ninja-build           # the generator
+  libxsimd-dev          # xsimd's headers, which the cross compiler sees through a folder of its own
+  googletest            # GoogleTest's sources in /usr/src/googletest, built for AArch64
+  g++-aarch64-linux-gnu # the AArch64 cross compiler
+  qemu-user             # runs the AArch64 test binaries (qemu-aarch64)
+)
+# The host build without the benchmarks, instrumented.
+EDGEWISE_CHECK_SANITIZE_PACKAGES=(
+  g++                  # GCC 12 with its AddressSanitizer and UBSan runtimes
+  cmake                # the build system
+  ninja-build          # the generator
+  libxsimd-dev         # the library's only dependency
+  libopenimageio-dev   # the tools, whose tests run sanitized too
+  openimageio-tools    # OpenImageIO's CMake package needs them; oiiotool writes test textures
+  libtinyobjloader-dev # edgewise-render and the mesh tests
+  libgtest-dev         # GoogleTest: the test suite
+)
+EDGEWISE_CHECK_FUZZ_PACKAGES=(
+  clang-14           # the fuzz targets' compiler (libFuzzer needs clang)
+  libclang-rt-14-dev # libFuzzer and clang's sanitizer runtimes
+  cmake              # the build system
+  ninja-build        # the generator
+  libxsimd-dev       # the library's only dependency
+)
+# The host build, installed, then a consumer project built against it with the same tools.
+EDGEWISE_CHECK_INSTALL_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")
+EDGEWISE_CHECK_FRESH_PACKAGES=(
+  debootstrap # builds the minimal Debian 12 root the two commands run on
+  socat       # the root's only way out: a relay to the package mirror
+  iproute2    # brings up loopback in the root's own network namespace
+)
+
+# Prints the packages of tools/check's stage $1, one per line.
+edgewise_check_stage_packages() {
+  local variable
+  variable="EDGEWISE_CHECK_$(tr 'a-z-' 'A-Z_' <<<"$1")_PACKAGES[@]"
+  if ! declare -p "${variable%'[@]'}" >/dev/null 2>&1; then
+    echo "error: no package list for check stage '$1' in tools/lib/deps.sh" >&2
+    return 1
+  fi
+  printf '%s\n' "${!variable}"
+}
 
 # Prints the packages among "$@" that dpkg does not report as installed.
 edgewise_missing_packages() {
@@ -31,7 +104,7 @@ edgewise_require_packages() {
   fi
 
   local missing
-  mapfile -t missing < <(edgewise_missing_packages "$@")
+  mapfile -t missing < <(edgewise_missing_packages "$@" | sort -u)
   if ((${#missing[@]} == 0)); then
     return 0
   fi

@@ -11,9 +11,11 @@ EDGEWISE_TESTS_PASSED=0
 EDGEWISE_TESTS_SKIPPED=0
 EDGEWISE_TESTS_FAILED=0
 
-# Whether a stage is selected by EDGEWISE_CHECK_STAGES (comma- or space-separated; default all).
+# Whether a stage is selected: named by EDGEWISE_CHECK_STAGES (comma- or space-separated; default
+# all) and not by EDGEWISE_CHECK_SKIP (the same form; default none).
 edgewise_stage_selected() {
-  local wanted=${EDGEWISE_CHECK_STAGES:-all}
+  local wanted=${EDGEWISE_CHECK_STAGES:-all} skipped=${EDGEWISE_CHECK_SKIP:-}
+  [[ " ${skipped//,/ } " == *" $1 "* ]] && return 1
   [[ $wanted == all ]] && return 0
   [[ " ${wanted//,/ } " == *" $1 "* ]]
 }

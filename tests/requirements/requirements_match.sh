@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# README.md's "Requirements" table shows exactly the package lists of tools/lib/deps.sh: one row
+# for tools/demo and one per stage of tools/check (the stages its `stages=(...)` line names),
+# each with the same packages. Every package in a list has its reason on its own line of
+# deps.sh ("name  # why").
+#
+#   requirements_match.sh REPOSITORY_ROOT
+# shellcheck source-path=SCRIPTDIR
+# shellcheck disable=SC2016 # the backticks are Markdown's, matched literally
+set -euo pipefail
+
+root=$1
+readme="$root/README.md"
+deps="$root/tools/lib/deps.sh"
+# shellcheck source=../../tools/lib/deps.sh
+source "$deps"
+
+failures=0
+fail() {
+  echo "FAIL: $*" >&2
+  failures=$((failures + 1))
+}
+
+# The check's stages, from its one list.
+stage_line=$(grep -E '^stages=\(' "$root/tools/check") || {
+  echo "FAIL: no stages=(...) line in tools/check" >&2
+  exit 1
+}
+read -r -a stages <<<"$(sed -E 's/^stages=\((.*)\)$/\1/' <<<"$stage_line")"
+((${#stages[@]} > 0)) || fail "tools/check names no stages"
+
+# The table rows of the Requirements section: "| <command> | `pkg` `pkg` ... |".
+section=$(sed -n '/^### Requirements$/,/^#/p' "$readme" | sed '1d;$d')
+[[ -n $section ]] || fail "README.md has no '### Requirements' section"
+declare -A readme_packages
+while IFS= read -r row; do
+  command=$(cut -d'|' -f2 <<<"$row")
+  packages=$(cut -d'|' -f3 <<<"$row")
+  case $command in
+    *'`tools/demo`'*) key=demo ;;
+    *'`tools/check` stage `'*) key=$(sed -E 's/.*stage `([^`]*)`.*/\1/' <<<"$command") ;;
+    *) continue ;;
+  esac
+  [[ -z ${readme_packages[$key]+set} ]] || fail "README.md has two rows for '$key'"
+  readme_packages[$key]=$({ grep -oE '`[^`]+`' <<<"$packages" || true; } | tr -d '`' | sort -u \
+    | tr '\n' ' ')
+done < <(grep -E '^\|' <<<"$section")
+
+# compare KEY PACKAGES...: the README row KEY lists exactly PACKAGES.
+compare() {
+  local key=$1
+  shift
+  local listed
+  listed=$(printf '%s\n' "$@" | sort -u | tr '\n' ' ')
+  if [[ -z ${readme_packages[$key]+set} ]]; then
+    fail "README.md's Requirements table has no row for '$key' (deps.sh lists: $listed)"
+  elif [[ ${readme_packages[$key]} != "$listed" ]]; then
+    fail "'$key': README.md lists '${readme_packages[$key]}', tools/lib/deps.sh '$listed'"
+  fi
+  unset "readme_packages[$key]"
+}
+
+compare demo "${EDGEWISE_DEMO_PACKAGES[@]}"
+all_packages=("${EDGEWISE_DEMO_PACKAGES[@]}")
+for stage in "${stages[@]}"; do
+  if ! mapfile -t packages < <(edgewise_check_stage_packages "$stage") || ((${#packages[@]} == 0)); then
+    fail "tools/lib/deps.sh has no package list for the check stage '$stage'"
+    continue
+  fi
+  compare "$stage" "${packages[@]}"
+  all_packages+=("${packages[@]}")
+done
+for key in "${!readme_packages[@]}"; do
+  fail "README.md has a row for '$key', which is not tools/demo or a stage of tools/check"
+done
+
+# Each package's reason, beside it.
+for package in $(printf '%s\n' "${all_packages[@]}" | sort -u); do
+  if ! grep -qE "^[[:space:]]*${package//+/\\+}[[:space:]]+#[[:space:]]*[^[:space:]]" "$deps"; then
+    fail "tools/lib/deps.sh gives no reason beside '$package' (\"$package  # why\")"
+  fi
+done
+
+if ((failures > 0)); then
+  exit 1
+fi
+echo "README.md's Requirements match tools/lib/deps.sh: tools/demo and ${#stages[@]} check stages"
