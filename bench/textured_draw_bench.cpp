@@ -85,7 +85,7 @@ void register_textured_draw_benchmarks() {
       const auto filter = static_cast<TextureFilter>(f);
       for (TextureDerivatives derivatives :
            {TextureDerivatives::quad, TextureDerivatives::analytic}) {
-        const bool widest = isa == Isa::avx2 || isa == Isa::neon;
+        const bool widest = isa == compiled_isas().back();  // the best ISA compiled
         const bool common = filter == TextureFilter::bilinear ||
                             filter == TextureFilter::trilinear ||
                             (filter == TextureFilter::anisotropic && isa != Isa::reference);

@@ -34,6 +34,14 @@ inline std::string isa_test_name(const ::testing::TestParamInfo<Isa>& info) {
   return std::string(isa_name(info.param));
 }
 
+// Every value of the Isa enum, compiled here or not (isa_name() names each of them).
+inline std::vector<Isa> every_isa_value() {
+  std::vector<Isa> isas;
+  for (int i = 0; isa_name(static_cast<Isa>(i)) != "unknown"; ++i)
+    isas.push_back(static_cast<Isa>(i));
+  return isas;
+}
+
 // Every compiled ISA, the scalar reference included.
 inline std::vector<Isa> every_isa() {
   return {compiled_isas().begin(), compiled_isas().end()};

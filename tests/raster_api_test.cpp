@@ -83,7 +83,7 @@ TEST_P(RasterApi, InvalidArgumentsThrow) {
 
 TEST(RasterApiIsa, UnsupportedIsaOptionThrows) {
   int unsupported = 0;
-  for (Isa isa : {Isa::reference, Isa::sse2, Isa::sse4_1, Isa::avx2, Isa::neon}) {
+  for (Isa isa : every_isa_value()) {
     if (isa_supported(isa)) continue;
     ++unsupported;
     const std::vector<Vec2> tri = {{0, 0}, {8, 0}, {0, 8}};

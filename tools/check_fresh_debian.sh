@@ -200,6 +200,10 @@ run_fresh() {
   printf '%s' "$sources_list" >"$rootfs/etc/apt/sources.list"
   printf '127.0.0.1 localhost\n%s' "$hosts_lines" >"$rootfs/etc/hosts"
   rm -f "$rootfs/etc/resolv.conf"
+  # No services start in a chroot (as in Debian's container images): packages that ship one
+  # install without trying, and without invoke-rc.d's warning.
+  printf '#!/bin/sh\nexit 101\n' >"$rootfs/usr/sbin/policy-rc.d"
+  chmod 755 "$rootfs/usr/sbin/policy-rc.d"
   copy_sources "$rootfs/root/edgewise"
   installed_packages "$rootfs" >"$work/$name/before"
 

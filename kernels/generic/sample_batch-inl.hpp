@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "../src/isa_kernels.hpp"
 #include "../src/sample_kernels.hpp"
 #include "interleave-inl.hpp"
 #include "summed_area-inl.hpp"

@@ -14,6 +14,7 @@
 
 #include <xsimd/xsimd.hpp>
 
+#include "../src/isa_kernels.hpp"
 #include "../src/shade_batch.hpp"
 #include "../src/texture_planes.hpp"
 #include "interpolation-inl.hpp"

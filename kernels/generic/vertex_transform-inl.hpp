@@ -13,7 +13,7 @@
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 template <class Arch>
-void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {
+void transform_vertex_array(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {
   using Floats = xsimd::batch<float, Arch>;
   constexpr std::size_t kLanes = Floats::size;
   std::size_t first = 0;

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "../src/depth_plane.hpp"
+#include "../src/framebuffer_access.hpp"
 #include "../src/shade_batch.hpp"
 #include "../src/texture_planes.hpp"
 #include "interpolation_reference.hpp"
@@ -86,6 +87,21 @@ std::uint32_t pack(const std::array<double, 4>& rgba) {
   return to_byte(rgba[0]) | to_byte(rgba[1]) << 8 | to_byte(rgba[2]) << 16 | to_byte(rgba[3]) << 24;
 }
 
+// Keeps the framebuffer's per-tile depth bounds valid after writing depth: every tile of the clip
+// rectangle gets its bound anew from its values (the reference does not use the bounds itself).
+void rebuild_depth_bounds(const detail::ShadeBatch& batch) {
+  const PixelRect& clip = batch.coverage.clip;
+  if (clip.empty()) return;
+  for (std::int32_t ty = clip.y0 / 8; ty <= (clip.y1 - 1) / 8; ++ty) {
+    for (std::int32_t tx = clip.x0 / 8; tx <= (clip.x1 - 1) / 8; ++tx) {
+      const std::size_t tile =
+          static_cast<std::size_t>(ty) * static_cast<std::size_t>(batch.tiles_x) +
+          static_cast<std::size_t>(tx);
+      batch.tile_max_depth[tile] = detail::tile_depth_bound(&batch.depth_tiles[tile * 64]);
+    }
+  }
+}
+
 }  // namespace
 
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
@@ -137,6 +153,7 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
       }
     }
   });
+  if (batch.depth_write && batch.tile_max_depth != nullptr) rebuild_depth_bounds(batch);
 }
 
 }  // namespace edgewise::reference

@@ -11,6 +11,16 @@
 
 namespace edgewise::detail {
 
+// The smallest bound on a tile's 64 depth values that no depth test can be wrongly rejected by:
+// their maximum, or +inf when one is NaN (NaN compares false against everything).
+inline float tile_depth_bound(const float* tile) {
+  float bound = -std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < 64; ++i) {
+    bound = std::isnan(tile[i]) ? std::numeric_limits<float>::infinity() : std::max(bound, tile[i]);
+  }
+  return bound;
+}
+
 struct FramebufferAccess {
   static std::uint32_t* color(Framebuffer& f) { return f.color_.data(); }
   static float* depth(Framebuffer& f) { return f.depth_.data(); }
@@ -18,15 +28,8 @@ struct FramebufferAccess {
   // The bounds, rebuilt from the depth values when something wrote depth around draw().
   static float* tile_max_depth(Framebuffer& f) {
     if (!f.depth_bounds_valid_) {
-      for (std::size_t tile = 0; tile < f.tile_max_depth_.size(); ++tile) {
-        float bound = -std::numeric_limits<float>::infinity();
-        for (std::size_t i = 0; i < 64; ++i) {
-          const float z = f.depth_[tile * 64 + i];
-          // NaN compares false against everything: +inf keeps the bound from rejecting.
-          bound = std::isnan(z) ? std::numeric_limits<float>::infinity() : std::max(bound, z);
-        }
-        f.tile_max_depth_[tile] = bound;
-      }
+      for (std::size_t tile = 0; tile < f.tile_max_depth_.size(); ++tile)
+        f.tile_max_depth_[tile] = tile_depth_bound(&f.depth_[tile * 64]);
       f.depth_bounds_valid_ = true;
     }
     return f.tile_max_depth_.data();

@@ -1,41 +1,51 @@
 #include "edgewise/isa.hpp"
 
-#include <array>
+#include <iterator>
 #include <atomic>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 
+#include "isa_list.hpp"
+
 namespace edgewise {
 namespace {
 
-constexpr Isa kCompiled[] = {
-    Isa::reference,
-#if defined(__x86_64__) || defined(_M_X64)
-    Isa::sse2,
-    Isa::sse4_1,
-    Isa::avx2,
-#elif defined(__aarch64__)
-    Isa::neon,
-#endif
+// Every value of the enum, in its order: isa_list.hpp's list must name them all.
+constexpr Isa kEvery[] = {
+#define EDGEWISE_ISA_VALUE(name) Isa::name,
+    EDGEWISE_FOR_EACH_ISA(EDGEWISE_ISA_VALUE)
+#undef EDGEWISE_ISA_VALUE
+};
+constexpr bool in_enum_order() {
+  for (int i = 0; i < static_cast<int>(std::size(kEvery)); ++i) {
+    if (static_cast<int>(kEvery[i]) != i) return false;
+  }
+  return true;
+}
+static_assert(in_enum_order(), "EDGEWISE_FOR_EACH_ISA must list the Isa enum in its order");
+
+constexpr std::string_view kNames[] = {
+#define EDGEWISE_ISA_NAME(name) #name,
+    EDGEWISE_FOR_EACH_ISA(EDGEWISE_ISA_NAME)
+#undef EDGEWISE_ISA_NAME
+};
+
+constexpr Isa kCompiled[] = {Isa::reference,
+#define EDGEWISE_COMPILED_ISA(name, arch, cpu_check) Isa::name,
+                             EDGEWISE_FOR_EACH_SIMD_ISA(EDGEWISE_COMPILED_ISA)
+#undef EDGEWISE_COMPILED_ISA
 };
 
 bool cpu_has(Isa isa) {
   switch (isa) {
     case Isa::reference:
       return true;
-#if defined(__x86_64__)
-    // GCC's checks include the OS's support for the wider registers (XGETBV).
-    case Isa::sse2:
-      return __builtin_cpu_supports("sse2");
-    case Isa::sse4_1:
-      return __builtin_cpu_supports("sse4.1");
-    case Isa::avx2:
-      return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-#elif defined(__aarch64__)
-    case Isa::neon:
-      return true;  // Advanced SIMD is mandatory on AArch64
-#endif
+#define EDGEWISE_CPU_CHECK(name, arch, cpu_check) \
+  case Isa::name:                                 \
+    return cpu_check;
+      EDGEWISE_FOR_EACH_SIMD_ISA(EDGEWISE_CPU_CHECK)
+#undef EDGEWISE_CPU_CHECK
     default:
       return false;
   }
@@ -71,23 +81,12 @@ Isa isa_from_environment() {
 }  // namespace
 
 std::string_view isa_name(Isa isa) {
-  switch (isa) {
-    case Isa::reference:
-      return "reference";
-    case Isa::sse2:
-      return "sse2";
-    case Isa::sse4_1:
-      return "sse4_1";
-    case Isa::avx2:
-      return "avx2";
-    case Isa::neon:
-      return "neon";
-  }
-  return "unknown";
+  const auto index = static_cast<std::size_t>(isa);
+  return index < std::size(kNames) ? kNames[index] : "unknown";
 }
 
 std::optional<Isa> parse_isa(std::string_view name) {
-  for (Isa isa : {Isa::reference, Isa::sse2, Isa::sse4_1, Isa::avx2, Isa::neon}) {
+  for (Isa isa : kEvery) {
     if (name == isa_name(isa)) return isa;
   }
   return std::nullopt;

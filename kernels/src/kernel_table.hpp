@@ -1,4 +1,6 @@
-// The per-ISA kernel table behind the public entry points.
+// The per-ISA kernel table behind the public entry points: one table per compiled ISA, the
+// scalar reference included, each holding every kernel. A table is defined in its ISA's own
+// objects (kernels/isa/kernel_table.cpp, once per ISA; kernels/reference/reference_kernels.cpp).
 #pragma once
 
 #include <cstddef>
@@ -6,6 +8,8 @@
 
 #include "edgewise/camera.hpp"
 #include "edgewise/raster.hpp"
+#include "isa_list.hpp"
+#include "sample_kernels.hpp"
 
 namespace edgewise::detail {
 
@@ -24,14 +28,20 @@ struct ShadeBatch;
 struct ShadeCounts;
 
 struct KernelTable {
-  Isa isa;
+  Isa isa;  // the ISA the table's objects were compiled for
+  // Coverage (raster.hpp): tiles to a sink, or covered pixels counted.
   void (*rasterize)(const TriangleBatch& batch, CoverageSink& sink, RasterReport& report);
   void (*count_coverage)(const TriangleBatch& batch, RasterReport& report, std::uint64_t& pixels);
-  void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
-  // out[i] = transform(m, in[i]) (camera.hpp), bit for bit.
+  // Drawing (render.hpp): the vertex transform, out[i] = transform(m, in[i]) (camera.hpp) bit
+  // for bit, and the screen-space triangles shaded into the framebuffer.
   void (*transform_vertices)(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);
+  void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
+  // Sampling (sampler.hpp): queries and results as records, or as one array per field.
+  SampleKernel sample;
+  SampleFieldsKernel sample_fields;
 };
 
+// The table of a compiled ISA (isa_supported() is the caller's to check).
 const KernelTable& kernel_table(Isa isa);
 
 // Counts a triangle that was not drawn into the report: errors (remembering the first one) or
@@ -49,19 +59,13 @@ inline void count_not_drawn(RasterReport& report, std::size_t triangle, Triangle
 
 }  // namespace edgewise::detail
 
-// One table per compiled ISA, each defined in its own translation unit.
+// Each ISA's table, defined in that ISA's namespace.
 namespace edgewise::isa_reference {
 const detail::KernelTable& kernel_table();
 }
-namespace edgewise::isa_sse2 {
-const detail::KernelTable& kernel_table();
-}
-namespace edgewise::isa_sse4_1 {
-const detail::KernelTable& kernel_table();
-}
-namespace edgewise::isa_avx2 {
-const detail::KernelTable& kernel_table();
-}
-namespace edgewise::isa_neon {
-const detail::KernelTable& kernel_table();
-}
+#define EDGEWISE_DECLARE_KERNEL_TABLE(name, arch, cpu_check) \
+  namespace edgewise::isa_##name {                           \
+    const detail::KernelTable& kernel_table();               \
+  }
+EDGEWISE_FOR_EACH_SIMD_ISA(EDGEWISE_DECLARE_KERNEL_TABLE)
+#undef EDGEWISE_DECLARE_KERNEL_TABLE

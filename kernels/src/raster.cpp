@@ -107,25 +107,4 @@ CoverageCount count_coverage(std::span<const Vec2> vertices, std::span<const std
   return count;
 }
 
-namespace detail {
-
-const KernelTable& kernel_table(Isa isa) {
-  switch (isa) {
-#if defined(__x86_64__)
-    case Isa::sse2:
-      return isa_sse2::kernel_table();
-    case Isa::sse4_1:
-      return isa_sse4_1::kernel_table();
-    case Isa::avx2:
-      return isa_avx2::kernel_table();
-#elif defined(__aarch64__)
-    case Isa::neon:
-      return isa_neon::kernel_table();
-#endif
-    default:
-      return isa_reference::kernel_table();
-  }
-}
-
-}  // namespace detail
 }  // namespace edgewise

@@ -250,38 +250,33 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
   }
   const auto mapped = Clock::now();
 
-  // The texture flattened for the kernels once per draw (the reference reads the Texture).
+  // The texture flattened for the kernels once per draw.
   std::optional<detail::FlatTexture> flat_texture;
-  if (options.texture && isa != Isa::reference) flat_texture.emplace(*options.texture->texture);
-  detail::ShadeBatch batch{
-      {screen.positions.data(), screen.positions.size(), screen.indices.data(),
-       screen.indices.size() / 3, clip, options.cull, nullptr},
-      screen.depth.data(),
-      screen.clip_w.data(),
-      screen.colors.data(),
-      options.shading == Shading::diffuse ? screen.normals.data() : nullptr,
-      options.shading,
-      options.interpolation,
-      options.perspective,
-      options.depth_test,
-      options.depth_write,
-      unit(options.light_direction),
-      options.ambient,
-      detail::FramebufferAccess::color(target),
-      detail::FramebufferAccess::depth(target),
-      target.tiles_x(),
-      // The reference neither uses nor keeps the bounds: they are rebuilt after it writes depth.
-      isa == Isa::reference ? nullptr : detail::FramebufferAccess::tile_max_depth(target),
-      options.hierarchical_depth};
+  if (options.texture) flat_texture.emplace(*options.texture->texture);
+  detail::ShadeBatch batch{{screen.positions.data(), screen.positions.size(), screen.indices.data(),
+                            screen.indices.size() / 3, clip, options.cull, nullptr},
+                           screen.depth.data(),
+                           screen.clip_w.data(),
+                           screen.colors.data(),
+                           options.shading == Shading::diffuse ? screen.normals.data() : nullptr,
+                           options.shading,
+                           options.interpolation,
+                           options.perspective,
+                           options.depth_test,
+                           options.depth_write,
+                           unit(options.light_direction),
+                           options.ambient,
+                           detail::FramebufferAccess::color(target),
+                           detail::FramebufferAccess::depth(target),
+                           target.tiles_x(),
+                           detail::FramebufferAccess::tile_max_depth(target),
+                           options.hierarchical_depth};
   if (options.texture) {
     batch.uvs = screen.uvs.data();
     batch.texture = options.texture->texture;
     batch.texture_description = flat_texture ? &flat_texture->description() : nullptr;
     batch.sampler = options.texture->sampler;
     batch.derivatives = options.texture->derivatives;
-  }
-  if (isa == Isa::reference && options.depth_write) {
-    detail::FramebufferAccess::invalidate_depth_bounds(target);
   }
   RasterReport raster;
   detail::ShadeCounts counts;

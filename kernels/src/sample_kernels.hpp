@@ -27,6 +27,7 @@ struct LevelTable {
 inline constexpr int kEwaWeights = 129;
 
 struct TextureDescription {
+  const Texture* texture = nullptr;   // what was flattened (the reference samples it directly)
   const std::byte* texels = nullptr;  // Texture::storage()
   TexelFormat format = TexelFormat::rgba8;
   const float* srgb_table = nullptr;  // 256 decoded values; null for linear textures
@@ -45,9 +46,7 @@ struct TextureDescription {
   std::int32_t rip_rows = 0;
 };
 
-// out[i] = the filtered linear RGBA at queries[i]. One definition per ISA, in
-// kernels/isa/sample_<isa>.cpp, with sample_fields(), the same over QueryFields and
-// ResultChannels.
+// out[i] = the filtered linear RGBA at queries[i]: each ISA's `sample` kernel (kernel_table.hpp).
 using SampleKernel = void (*)(const TextureDescription& texture, const SamplerOptions& options,
                               const TextureQuery* queries, std::size_t count, Vec4* out);
 
@@ -66,29 +65,9 @@ struct ResultChannels {
   float* c[4];  // R, G, B, A
 };
 
-}  // namespace edgewise::detail
+// The same as SampleKernel over QueryFields and ResultChannels: each ISA's `sample_fields`.
+using SampleFieldsKernel = void (*)(const TextureDescription& texture,
+                                    const SamplerOptions& options, const QueryFields& queries,
+                                    std::size_t count, const ResultChannels& out);
 
-namespace edgewise::isa_sse2 {
-void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
-            std::size_t, Vec4*);
-void sample_fields(const detail::TextureDescription&, const SamplerOptions&,
-                   const detail::QueryFields&, std::size_t, const detail::ResultChannels&);
-}  // namespace edgewise::isa_sse2
-namespace edgewise::isa_sse4_1 {
-void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
-            std::size_t, Vec4*);
-void sample_fields(const detail::TextureDescription&, const SamplerOptions&,
-                   const detail::QueryFields&, std::size_t, const detail::ResultChannels&);
-}  // namespace edgewise::isa_sse4_1
-namespace edgewise::isa_avx2 {
-void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
-            std::size_t, Vec4*);
-void sample_fields(const detail::TextureDescription&, const SamplerOptions&,
-                   const detail::QueryFields&, std::size_t, const detail::ResultChannels&);
-}  // namespace edgewise::isa_avx2
-namespace edgewise::isa_neon {
-void sample(const detail::TextureDescription&, const SamplerOptions&, const TextureQuery*,
-            std::size_t, Vec4*);
-void sample_fields(const detail::TextureDescription&, const SamplerOptions&,
-                   const detail::QueryFields&, std::size_t, const detail::ResultChannels&);
-}  // namespace edgewise::isa_neon
+}  // namespace edgewise::detail

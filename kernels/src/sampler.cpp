@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "reference/sample_reference.hpp"
+#include "kernel_table.hpp"
 #include "texture_description.hpp"
 
 namespace edgewise {
@@ -23,17 +23,9 @@ void sample(const Texture& texture, const SamplerOptions& options,
                                 " is not supported here");
   }
   if (queries.empty()) return;
-  const detail::SampleKernel kernel = detail::sample_kernel(chosen);
-  if (kernel == nullptr) {
-    for (std::size_t i = 0; i < queries.size(); ++i) {
-      const reference::Rgba rgba = reference::sample(texture, options, queries[i]);
-      out[i] = {static_cast<float>(rgba[0]), static_cast<float>(rgba[1]),
-                static_cast<float>(rgba[2]), static_cast<float>(rgba[3])};
-    }
-    return;
-  }
   const detail::FlatTexture flat(texture);
-  kernel(flat.description(), options, queries.data(), queries.size(), out.data());
+  detail::kernel_table(chosen).sample(flat.description(), options, queries.data(), queries.size(),
+                                      out.data());
 }
 
 std::string_view texture_filter_name(TextureFilter filter) {

@@ -75,6 +75,7 @@ FlatTexture::FlatTexture(const Texture& texture) {
   mips_ = level_arrays(texture.mip_levels(), texel_bytes);
   rips_ = level_arrays(texture.ripmap_levels(), texel_bytes);
   TextureDescription& d = description_;
+  d.texture = &texture;
   d.texels = texture.storage();
   d.format = texture.format();
   d.srgb_table = texture.format() == TexelFormat::rgba8 && texture.encoding() == ColorEncoding::srgb
@@ -95,25 +96,6 @@ FlatTexture::FlatTexture(const Texture& texture) {
       texture.ripmap_columns() > 0
           ? static_cast<std::int32_t>(texture.ripmap_levels().size()) / texture.ripmap_columns()
           : 0;
-}
-
-SampleKernel sample_kernel(Isa isa) {
-  switch (isa) {
-#if defined(__x86_64__) || defined(_M_X64)
-    case Isa::sse2:
-      return &isa_sse2::sample;
-    case Isa::sse4_1:
-      return &isa_sse4_1::sample;
-    case Isa::avx2:
-      return &isa_avx2::sample;
-#endif
-#if defined(__aarch64__)
-    case Isa::neon:
-      return &isa_neon::sample;
-#endif
-    default:
-      return nullptr;
-  }
 }
 
 }  // namespace edgewise::detail

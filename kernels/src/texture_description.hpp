@@ -43,7 +43,4 @@ class FlatTexture {
   TextureDescription description_;
 };
 
-// The vectorized sampling kernel of an ISA, or null for Isa::reference (and ISAs not compiled).
-SampleKernel sample_kernel(Isa isa);
-
 }  // namespace edgewise::detail

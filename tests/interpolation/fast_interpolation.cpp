@@ -1,41 +1,26 @@
 #include "fast_interpolation.hpp"
 
-namespace edgewise {
-#if defined(__x86_64__)
-namespace isa_test_sse2 {
-const test::FastInterpolation& fast_interpolation();
-}
-namespace isa_test_sse4_1 {
-const test::FastInterpolation& fast_interpolation();
-}
-namespace isa_test_avx2 {
-const test::FastInterpolation& fast_interpolation();
-}
-#elif defined(__aarch64__)
-namespace isa_test_neon {
-const test::FastInterpolation& fast_interpolation();
-}
-#endif
+#include "src/isa_list.hpp"
 
-namespace test {
+#define EDGEWISE_DECLARE_TEST_TABLE(name, arch, cpu_check) \
+  namespace edgewise::isa_test_##name {                    \
+    const test::FastInterpolation& fast_interpolation();   \
+  }
+EDGEWISE_FOR_EACH_SIMD_ISA(EDGEWISE_DECLARE_TEST_TABLE)
+#undef EDGEWISE_DECLARE_TEST_TABLE
+
+namespace edgewise::test {
 
 const FastInterpolation* fast_interpolation(Isa isa) {
   switch (isa) {
-#if defined(__x86_64__)
-    case Isa::sse2:
-      return &isa_test_sse2::fast_interpolation();
-    case Isa::sse4_1:
-      return &isa_test_sse4_1::fast_interpolation();
-    case Isa::avx2:
-      return &isa_test_avx2::fast_interpolation();
-#elif defined(__aarch64__)
-    case Isa::neon:
-      return &isa_test_neon::fast_interpolation();
-#endif
+#define EDGEWISE_TEST_TABLE_CASE(name, arch, cpu_check) \
+  case Isa::name:                                       \
+    return &isa_test_##name::fast_interpolation();
+    EDGEWISE_FOR_EACH_SIMD_ISA(EDGEWISE_TEST_TABLE_CASE)
+#undef EDGEWISE_TEST_TABLE_CASE
     default:
       return nullptr;
   }
 }
 
-}  // namespace test
-}  // namespace edgewise
+}  // namespace edgewise::test

@@ -1,5 +1,5 @@
 // The float32 interpolators of kernels/generic/interpolation-inl.hpp, compiled once per ISA
-// with that ISA's flags (fast_interpolation_<isa>.cpp), behind plain pointer-taking functions
+// with that ISA's flags (fast_interpolation_kernels.cpp), behind plain pointer-taking functions
 // the tests can call without SIMD types crossing translation units.
 #pragma once
 

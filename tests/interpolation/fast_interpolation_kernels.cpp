@@ -1,6 +1,8 @@
-// Body of fast_interpolation_<isa>.cpp: instantiates every interpolator for EDGEWISE_ARCH in the
-// namespace EDGEWISE_ISA_NAMESPACE and exposes them as a FastInterpolation table.
-#pragma once
+// Every interpolator instantiated for one ISA and exposed as a FastInterpolation table; compiled
+// once per ISA (edgewise_add_isa_objects), in namespaces of its own (isa_test_<isa>), apart from
+// the library's copies of the same inline code.
+#define EDGEWISE_ISA_NAMESPACE EDGEWISE_CONCAT(isa_test_, EDGEWISE_BUILD_ISA)
+#include "src/isa_build.hpp"
 
 #include "fast_interpolation.hpp"
 #include "generic/interpolation-inl.hpp"

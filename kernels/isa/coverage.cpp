@@ -1,0 +1,67 @@
+// The coverage kernels (raster.hpp's rasterize() and count_coverage()), compiled once per ISA.
+#include "../src/isa_build.hpp"
+
+#include <bit>
+#include <cstdint>
+
+#include "../generic/triangle_batch-inl.hpp"
+#include "../src/isa_kernels.hpp"
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+namespace {
+
+struct CountingVisitor {
+  std::uint64_t pixels = 0;
+  void begin_triangle(std::uint32_t) {}
+  void tile(std::uint32_t, std::uint32_t, std::uint64_t mask) {
+    pixels += static_cast<std::uint64_t>(std::popcount(mask));
+  }
+  void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t, std::uint64_t mask) {
+    pixels += static_cast<std::uint64_t>(std::popcount(mask)) * (end - begin);
+  }
+};
+
+// Buffers tiles and hands them to the sink in batches.
+class BufferingVisitor {
+ public:
+  explicit BufferingVisitor(CoverageSink& sink) : sink_(sink) {}
+  std::uint32_t triangle = 0;
+  void begin_triangle(std::uint32_t t) { triangle = t; }
+  void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
+    buffer_[count_++] = {triangle, static_cast<std::uint16_t>(tile_x),
+                         static_cast<std::uint16_t>(tile_y), mask};
+    if (count_ == kCapacity) flush();
+  }
+  void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
+                  std::uint64_t mask) {
+    for (std::uint32_t tile_x = begin; tile_x < end; ++tile_x)
+      tile(tile_x, tile_y, mask);
+  }
+  void flush() {
+    if (count_ != 0) sink_.consume({buffer_, count_});
+    count_ = 0;
+  }
+
+ private:
+  static constexpr std::size_t kCapacity = 256;
+  CoverageSink& sink_;
+  std::size_t count_ = 0;
+  TileCoverage buffer_[kCapacity];
+};
+
+}  // namespace
+
+void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report) {
+  BufferingVisitor visitor(sink);
+  run_batch(batch, visitor, report);
+  visitor.flush();
+}
+
+void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
+                    std::uint64_t& pixels) {
+  CountingVisitor visitor;
+  run_batch(batch, visitor, report);
+  pixels += visitor.pixels;
+}
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

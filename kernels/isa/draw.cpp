@@ -1,0 +1,44 @@
+// The drawing kernels (render.hpp's draw()): the vertex transform and the shading of
+// screen-space triangles, compiled once per ISA.
+#include "../src/isa_build.hpp"
+
+#include "../generic/shade-inl.hpp"
+#include "../generic/triangle_batch-inl.hpp"
+#include "../generic/vertex_transform-inl.hpp"
+#include "../src/isa_kernels.hpp"
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+namespace {
+
+template <InterpolationMethod Method>
+void shade_with(const detail::ShadeBatch& batch, RasterReport& report,
+                detail::ShadeCounts& counts) {
+  ShadingVisitor<Arch, Method> visitor(batch);
+  run_batch(batch.coverage, visitor, report);
+  visitor.add_counts(counts);
+}
+
+}  // namespace
+
+void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
+  switch (batch.method) {
+    case InterpolationMethod::nearest_vertex:
+      return shade_with<InterpolationMethod::nearest_vertex>(batch, report, counts);
+    case InterpolationMethod::inverse_distance:
+      return shade_with<InterpolationMethod::inverse_distance>(batch, report, counts);
+    case InterpolationMethod::subtriangle_areas:
+      return shade_with<InterpolationMethod::subtriangle_areas>(batch, report, counts);
+    case InterpolationMethod::edge_functions:
+      return shade_with<InterpolationMethod::edge_functions>(batch, report, counts);
+    case InterpolationMethod::scanline:
+      return shade_with<InterpolationMethod::scanline>(batch, report, counts);
+    case InterpolationMethod::plane_equations:
+      return shade_with<InterpolationMethod::plane_equations>(batch, report, counts);
+  }
+}
+
+void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {
+  transform_vertex_array<Arch>(m, in, count, out);
+}
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -1,0 +1,15 @@
+// The ISA's kernel table: every kernel of its objects (isa_kernels.hpp), compiled once per ISA.
+#include "../src/isa_build.hpp"
+
+#include "../src/isa_kernels.hpp"
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+
+const detail::KernelTable& kernel_table() {
+  static constexpr detail::KernelTable table{EDGEWISE_ISA_ENUM,   &rasterize, &count_coverage,
+                                             &transform_vertices, &shade,     &sample,
+                                             &sample_fields};
+  return table;
+}
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -1,0 +1,5 @@
+// The sampling kernels (sampler.hpp's sample(), and the texture lookups of draw()), compiled
+// once per ISA.
+#include "../src/isa_build.hpp"
+
+#include "../generic/sample_batch-inl.hpp"

@@ -1,0 +1,83 @@
+// The scalar reference as a kernel table, like every ISA's: coverage, drawing and sampling by
+// the reference's plain loops (raster_reference, shade_reference, sample_reference), in exact
+// integers or double precision; sampled values are rounded to float only on the way out.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "../src/kernel_table.hpp"
+#include "raster_reference.hpp"
+#include "sample_reference.hpp"
+
+namespace edgewise::isa_reference {
+namespace {
+
+// Runs the reference over a batch; `tile` receives (triangle, tile_x, tile_y, mask).
+template <class TileFn>
+void run_batch(const detail::TriangleBatch& batch, RasterReport& report, TileFn&& tile) {
+  reference::for_each_drawn_triangle(
+      batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
+        reference::for_each_tile(snapped, batch.clip,
+                                 [&](std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
+                                   tile(static_cast<std::uint32_t>(t), tx, ty, mask);
+                                 });
+      });
+}
+
+void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report) {
+  std::vector<TileCoverage> tiles;
+  run_batch(
+      batch, report, [&](std::uint32_t t, std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
+        tiles.push_back({t, static_cast<std::uint16_t>(tx), static_cast<std::uint16_t>(ty), mask});
+      });
+  if (!tiles.empty()) sink.consume(tiles);
+}
+
+void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = transform(m, in[i]);
+}
+
+void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
+                    std::uint64_t& pixels) {
+  run_batch(batch, report, [&](std::uint32_t, std::uint32_t, std::uint32_t, std::uint64_t mask) {
+    for (; mask != 0; mask &= mask - 1)
+      ++pixels;  // plain bit counting, no intrinsics
+  });
+}
+
+Vec4 to_float(const reference::Rgba& rgba) {
+  return {static_cast<float>(rgba[0]), static_cast<float>(rgba[1]), static_cast<float>(rgba[2]),
+          static_cast<float>(rgba[3])};
+}
+
+void sample(const detail::TextureDescription& texture, const SamplerOptions& options,
+            const TextureQuery* queries, std::size_t count, Vec4* out) {
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = to_float(reference::sample(*texture.texture, options, queries[i]));
+}
+
+void sample_fields(const detail::TextureDescription& texture, const SamplerOptions& options,
+                   const detail::QueryFields& queries, std::size_t count,
+                   const detail::ResultChannels& out) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const TextureQuery query{queries.s[i],    queries.t[i],    queries.dsdx[i],
+                             queries.dtdx[i], queries.dsdy[i], queries.dtdy[i]};
+    const Vec4 rgba = to_float(reference::sample(*texture.texture, options, query));
+    out.c[0][i] = rgba.x;
+    out.c[1][i] = rgba.y;
+    out.c[2][i] = rgba.z;
+    out.c[3][i] = rgba.w;
+  }
+}
+
+}  // namespace
+
+const detail::KernelTable& kernel_table() {
+  static constexpr detail::KernelTable table{
+      Isa::reference,    &rasterize, &count_coverage, &transform_vertices,
+      &reference::shade, &sample,    &sample_fields};
+  return table;
+}
+
+}  // namespace edgewise::isa_reference

@@ -1,0 +1,30 @@
+// The kernels every ISA defines in its own namespace, one translation unit per capability
+// (kernels/isa/coverage.cpp, draw.cpp, sample.cpp), gathered into its table by
+// kernels/isa/kernel_table.cpp. Included after isa_build.hpp.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "kernel_table.hpp"
+#include "sample_kernels.hpp"
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+
+// coverage.cpp
+void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report);
+void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
+                    std::uint64_t& pixels);
+
+// draw.cpp
+void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);
+void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
+
+// sample.cpp
+void sample(const detail::TextureDescription& texture, const SamplerOptions& options,
+            const TextureQuery* queries, std::size_t count, Vec4* out);
+void sample_fields(const detail::TextureDescription& texture, const SamplerOptions& options,
+                   const detail::QueryFields& queries, std::size_t count,
+                   const detail::ResultChannels& out);
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -1,0 +1,25 @@
+// The instruction sets, listed once for the code (cmake/isas.cmake lists them for the build;
+// tests/isa_dispatch_test.cpp fails if the two lists disagree). Everything per ISA follows from
+// these lists: compiled_isas(), the CPU checks, isa_name(), the kernel tables and the dispatch.
+#pragma once
+
+#include "edgewise/isa.hpp"
+
+// Every value of the Isa enum, in its order: X(name).
+#define EDGEWISE_FOR_EACH_ISA(X) X(reference) X(sse2) X(sse4_1) X(avx2) X(neon)
+
+// The vectorized ISAs compiled for the target processor, worst first, as
+// X(name, xsimd architecture, whether this CPU runs it). The reference, compiled everywhere, is
+// not among them. GCC's __builtin_cpu_supports includes the OS's support for the wider
+// registers (XGETBV).
+#if defined(__x86_64__) || defined(_M_X64)
+#define EDGEWISE_FOR_EACH_SIMD_ISA(X)                        \
+  X(sse2, xsimd::sse2, __builtin_cpu_supports("sse2"))       \
+  X(sse4_1, xsimd::sse4_1, __builtin_cpu_supports("sse4.1")) \
+  X(avx2, xsimd::fma3<xsimd::avx2>, __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+#elif defined(__aarch64__)
+// Advanced SIMD is mandatory on AArch64.
+#define EDGEWISE_FOR_EACH_SIMD_ISA(X) X(neon, xsimd::neon64, true)
+#else
+#error "edgewise: no ISA list for this processor (kernels/src/isa_list.hpp)"
+#endif

@@ -1,9 +1,0 @@
-// The float32 interpolators compiled for neon.
-#if !defined(__aarch64__) || !defined(__ARM_NEON)
-#error "fast_interpolation_neon.cpp must be compiled with an AArch64 compiler"
-#endif
-
-#define EDGEWISE_ISA_NAMESPACE isa_test_neon
-#define EDGEWISE_ISA_ENUM Isa::neon
-#define EDGEWISE_ARCH xsimd::neon64
-#include "fast_interpolation-inl.hpp"
