@@ -1,5 +1,6 @@
 // Transforms, cameras and the viewport mapping put known points where the conventions say
-// (camera.hpp): D3D clip space, right-handed view space looking down -z, DESIGN.md's screen.
+// (camera.hpp): D3D clip space, right-handed view space looking down -z, docs/DESIGN.md's
+// screen.
 #include <gtest/gtest.h>
 
 #include <cmath>

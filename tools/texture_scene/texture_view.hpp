@@ -2,7 +2,7 @@
 // seen through a pinhole camera, in double precision. The sampler's queries and the ground
 // truth both come from it, so a filter is scored on exactly the footprint it was given.
 //
-// Screen conventions (DESIGN.md): origin top-left, y down; pixel (i, j) is the square
+// Screen conventions (docs/DESIGN.md): origin top-left, y down; pixel (i, j) is the square
 // [i, i+1) x [j, j+1), sampled at its centre (i + 0.5, j + 0.5).
 #pragma once
 

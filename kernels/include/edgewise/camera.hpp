@@ -6,9 +6,9 @@
 // - View space is right-handed: the camera sits at the origin looking down -z, y up, x right.
 // - Clip space follows D3D: a point is visible when -w <= x <= w, -w <= y <= w and 0 <= z <= w.
 //   perspective() and orthographic() map the near plane to z = 0 and the far plane to z = w.
-// - Screen space follows DESIGN.md: origin at the top-left corner, y down, pixel (i, j) sampled at
-//   (i + 0.5, j + 0.5). NDC (x/w, y/w) = (-1, 1) lands on the top-left corner (0, 0) and (1, -1)
-//   on the bottom-right corner (width, height).
+// - Screen space follows docs/DESIGN.md, "Coordinates and snapping": origin at the top-left
+//   corner, y down, pixel (i, j) sampled at (i + 0.5, j + 0.5). NDC (x/w, y/w) = (-1, 1) lands on
+//   the top-left corner (0, 0) and (1, -1) on the bottom-right corner (width, height).
 #pragma once
 
 #include <cstdint>
@@ -51,7 +51,7 @@ struct Viewport {
 
 // A vertex after the perspective divide and viewport mapping.
 struct ScreenVertex {
-  float x, y;   // pixels, DESIGN.md's screen space
+  float x, y;   // pixels, docs/DESIGN.md's screen space
   float z;      // depth z/w, clamped to [0, 1]
   float inv_w;  // 1/w, interpolated linearly in screen space for perspective-correct attributes
 };

@@ -1,6 +1,6 @@
 // Coverage rasterization: triangles in, 8x8 tile coverage masks out.
 //
-// Conventions (see DESIGN.md): pixel (i, j) is sampled at (i + 0.5, j + 0.5); vertices are
+// Conventions (see docs/DESIGN.md): pixel (i, j) is sampled at (i + 0.5, j + 0.5); vertices are
 // snapped to 1/256 px with ties to even; the top-left fill rule decides samples on edges; a tile
 // mask has bit (y * 8 + x) for pixel (tile_x * 8 + x, tile_y * 8 + y).
 #pragma once
