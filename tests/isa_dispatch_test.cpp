@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/edgewise.hpp"
 #include "isa_params.hpp"
 #include "src/kernel_table.hpp"
 
@@ -103,6 +103,48 @@ TEST(IsaDispatch, UnsupportedIsaCannotBeForced) {
     EXPECT_THROW(force_isa(isa), std::invalid_argument) << isa_name(isa);
     EXPECT_THROW(ScopedIsa{isa}, std::invalid_argument) << isa_name(isa);
     EXPECT_EQ(active_isa(), before);
+  }
+  EXPECT_GT(unsupported, 0);  // no build has both x86 and AArch64 kernels
+}
+
+// rasterize(), count_coverage(), draw(), sample(), force_isa() and parse_supported_isa() refuse
+// an ISA this machine lacks in the same words.
+TEST(IsaDispatch, EveryEntryPointRefusesAnUnsupportedIsaAlike) {
+  std::string supported;
+  for (Isa isa : supported_isas())
+    supported += (supported.empty() ? "" : ", ") + std::string(isa_name(isa));
+  int unsupported = 0;
+  for (Isa isa : kEveryIsa) {
+    if (isa_supported(isa)) continue;
+    ++unsupported;
+    const std::string expected = "ISA " + std::string(isa_name(isa)) +
+                                 " is not supported on this machine; it supports " + supported;
+    const auto expect_refusal = [&](const char* entry_point, auto&& call) {
+      try {
+        call();
+        ADD_FAILURE() << entry_point << " accepted " << isa_name(isa);
+      } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find(expected), std::string::npos)
+            << entry_point << ": " << error.what();
+      }
+    };
+    RasterOptions raster;
+    raster.isa = isa;
+    NullSink sink;
+    expect_refusal("rasterize", [&] { rasterize(kTriangle, {}, kTarget, raster, sink); });
+    expect_refusal("count_coverage", [&] { count_coverage(kTriangle, {}, kTarget, raster); });
+    Framebuffer target(16, 16);
+    const std::vector<Vec3> positions = {{-1, -1, 0.5f}, {1, -1, 0.5f}, {0, 1, 0.5f}};
+    DrawOptions draw_options;
+    draw_options.isa = isa;
+    expect_refusal("draw", [&] { draw(target, DrawMesh{positions, {}, {}, {}}, draw_options); });
+    const std::vector<std::uint8_t> texels(4, 255);
+    const Texture texture = Texture::from_rgba8(1, 1, texels, ColorEncoding::linear);
+    const std::vector<TextureQuery> queries(1, TextureQuery{0.5f, 0.5f, 0, 0, 0, 0});
+    std::vector<Vec4> results(1);
+    expect_refusal("sample", [&] { edgewise::sample(texture, {}, queries, results, isa); });
+    expect_refusal("force_isa", [&] { force_isa(isa); });
+    expect_refusal("parse_supported_isa", [&] { parse_supported_isa(isa_name(isa)); });
   }
   EXPECT_GT(unsupported, 0);  // no build has both x86 and AArch64 kernels
 }

@@ -63,17 +63,24 @@ std::string supported_list() {
   return names;
 }
 
+// The one wording of each refusal, wherever an ISA is named.
+std::string unknown_isa(std::string_view name) {
+  return "unknown ISA '" + std::string(name) + "'; this machine supports " + supported_list();
+}
+std::string unsupported_isa(std::string_view name) {
+  return "ISA " + std::string(name) + " is not supported on this machine; it supports " +
+         supported_list();
+}
+
 Isa isa_from_environment() {
   const char* value = std::getenv("EDGEWISE_ISA");
   if (value == nullptr || *value == '\0') return best_isa();
   const std::optional<Isa> isa = parse_isa(value);
-  if (!isa) {
-    throw std::invalid_argument(std::string("EDGEWISE_ISA=") + value +
-                                ": unknown ISA; this machine supports " + supported_list());
-  }
+  if (!isa)
+    throw std::invalid_argument(std::string("EDGEWISE_ISA=") + value + ": " + unknown_isa(value));
   if (!isa_supported(*isa)) {
-    throw std::invalid_argument(std::string("EDGEWISE_ISA=") + value +
-                                ": not supported here; this machine supports " + supported_list());
+    throw std::invalid_argument(std::string("EDGEWISE_ISA=") + value + ": " +
+                                unsupported_isa(value));
   }
   return *isa;
 }
@@ -124,11 +131,17 @@ Isa active_isa() {
 
 void force_isa(std::optional<Isa> isa) {
   if (isa && !isa_supported(*isa)) {
-    throw std::invalid_argument(std::string("force_isa: ") + std::string(isa_name(*isa)) +
-                                " is not supported here; this machine supports " +
-                                supported_list());
+    throw std::invalid_argument("force_isa: " + unsupported_isa(isa_name(*isa)));
   }
   forced.store(isa ? static_cast<int>(*isa) : kNoOverride, std::memory_order_relaxed);
+}
+
+Isa resolve_isa(std::optional<Isa> requested) {
+  // An explicit ISA must not consult EDGEWISE_ISA (which may name one this CPU lacks).
+  if (!requested) return active_isa();
+  if (!isa_supported(*requested))
+    throw std::invalid_argument(unsupported_isa(isa_name(*requested)));
+  return *requested;
 }
 
 ScopedIsa::ScopedIsa(Isa isa) {
@@ -142,20 +155,9 @@ ScopedIsa::~ScopedIsa() {
 }
 
 Isa parse_supported_isa(std::string_view name) {
-  std::string supported;
-  for (Isa isa : supported_isas()) {
-    if (!supported.empty()) supported += ", ";
-    supported += isa_name(isa);
-  }
   const std::optional<Isa> isa = parse_isa(name);
-  if (!isa) {
-    throw std::invalid_argument("unknown ISA '" + std::string(name) + "'; this machine supports " +
-                                supported);
-  }
-  if (!isa_supported(*isa)) {
-    throw std::invalid_argument("ISA " + std::string(name) +
-                                " is not supported on this machine; it supports " + supported);
-  }
+  if (!isa) throw std::invalid_argument(unknown_isa(name));
+  if (!isa_supported(*isa)) throw std::invalid_argument(unsupported_isa(name));
   return *isa;
 }
 

@@ -36,12 +36,7 @@ detail::TriangleBatch make_batch(std::span<const Vec2> vertices,
 }
 
 const detail::KernelTable& chosen_kernels(const RasterOptions& options) {
-  // An explicit ISA must not consult EDGEWISE_ISA (which may name one this CPU lacks).
-  const Isa isa = options.isa ? *options.isa : active_isa();
-  if (!isa_supported(isa)) {
-    throw std::invalid_argument("ISA " + std::string(isa_name(isa)) + " is not supported here");
-  }
-  return detail::kernel_table(isa);
+  return detail::kernel_table(resolve_isa(options.isa));
 }
 
 }  // namespace

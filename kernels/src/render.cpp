@@ -211,10 +211,7 @@ Vec3 unit(const Vec3& v) {
 DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options) {
   using Clock = std::chrono::steady_clock;
   validate(mesh, options);
-  const Isa isa = options.isa ? *options.isa : active_isa();
-  if (!isa_supported(isa)) {
-    throw std::invalid_argument("ISA " + std::string(isa_name(isa)) + " is not supported here");
-  }
+  const Isa isa = resolve_isa(options.isa);
   const PixelRect clip = clip_rect(RasterTarget{target.width(), target.height(), options.scissor});
   DrawReport report;
   report.isa = isa;

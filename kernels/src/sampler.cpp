@@ -17,11 +17,7 @@ void sample(const Texture& texture, const SamplerOptions& options,
                                 std::to_string(out.size()) + " results");
   }
   detail::validate_sampler(texture, options, "sample");
-  const Isa chosen = isa ? *isa : active_isa();
-  if (!isa_supported(chosen)) {
-    throw std::invalid_argument("sample: ISA " + std::string(isa_name(chosen)) +
-                                " is not supported here");
-  }
+  const Isa chosen = resolve_isa(isa);
   if (queries.empty()) return;
   const detail::FlatTexture flat(texture);
   detail::kernel_table(chosen).sample(flat.description(), options, queries.data(), queries.size(),

@@ -9,6 +9,8 @@
 // - Screen space follows docs/DESIGN.md, "Coordinates and snapping": origin at the top-left
 //   corner, y down, pixel (i, j) sampled at (i + 0.5, j + 0.5). NDC (x/w, y/w) = (-1, 1) lands on
 //   the top-left corner (0, 0) and (1, -1) on the bottom-right corner (width, height).
+//
+// Thread safety: plain functions of their arguments; call them from any thread.
 #pragma once
 
 #include <cstdint>

@@ -15,6 +15,8 @@
 //
 // Crack-free: two triangles sharing an edge compute bit-identical points where that edge crosses
 // a plane (clip.cpp says how), so a mesh stays watertight after clipping.
+//
+// Thread safety: plain functions of their arguments; call them from any thread.
 #pragma once
 
 #include <cstdint>

@@ -9,6 +9,9 @@
 //
 // Colour is packed R | G << 8 | B << 16 | A << 24 (bytes R, G, B, A in memory on little-endian
 // machines), linear values v / 255.
+//
+// Thread safety: a Framebuffer is an ordinary object. Its const members may be called from many
+// threads at once; clear(), draw() into it, or any other change needs it to itself.
 #pragma once
 
 #include <cstddef>

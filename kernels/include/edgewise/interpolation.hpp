@@ -4,6 +4,8 @@
 // method defines one). The weights are computed in screen space; perspective-correct
 // interpolation then divides them by each vertex's clip-space w and renormalizes, which is what
 // interpolating attribute/w and 1/w in screen space amounts to.
+//
+// Thread safety: plain functions of their arguments; call them from any thread.
 #pragma once
 
 #include <cstdint>

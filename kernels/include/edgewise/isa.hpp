@@ -3,6 +3,12 @@
 // The active ISA is, in order of precedence: a ScopedIsa/force_isa() override, the
 // EDGEWISE_ISA environment variable (reference|sse2|sse4_1|avx2|neon), or the best ISA
 // this CPU supports. `reference` is the scalar oracle, available everywhere.
+//
+// Thread safety: every function may be called from any thread. EDGEWISE_ISA is read once, at the
+// first call that needs it. The override (force_isa(), ScopedIsa) is one value for the whole
+// process, not per thread: setting it while other threads run entry points without an explicit
+// ISA changes the ISA their next calls use. Code that runs several threads, and tests that force
+// an ISA, should name the ISA in each call's options instead.
 #pragma once
 
 #include <optional>
@@ -30,6 +36,10 @@ Isa parse_supported_isa(std::string_view name);
 // The ISA that entry points use when their options do not name one. Throws
 // std::invalid_argument if EDGEWISE_ISA names an unknown or unsupported ISA.
 Isa active_isa();
+
+// The ISA an entry point runs: `requested` when given (without consulting EDGEWISE_ISA), else
+// active_isa(). Throws std::invalid_argument if it is not supported here.
+Isa resolve_isa(std::optional<Isa> requested);
 
 // Process-wide override; std::nullopt returns to the environment/CPU choice.
 // Throws std::invalid_argument for an ISA that is not supported here.

@@ -3,6 +3,10 @@
 // Conventions (see docs/DESIGN.md): pixel (i, j) is sampled at (i + 0.5, j + 0.5); vertices are
 // snapped to 1/256 px with ties to even; the top-left fill rule decides samples on edges; a tile
 // mask has bit (y * 8 + x) for pixel (tile_x * 8 + x, tile_y * 8 + y).
+//
+// Thread safety: rasterize() and count_coverage() keep no state between calls and may run on
+// many threads at once, each with its own sink and statuses; the sink is called on the calling
+// thread, before the function returns.
 #pragma once
 
 #include <cstdint>

@@ -16,6 +16,9 @@
 // and derivatives come from one fixed float32 formula (kernels/src/texture_planes.hpp), so every
 // ISA and the scalar reference sample the texture at the same queries; the texture-coordinate
 // planes do not depend on the interpolation method, which applies to colours and normals.
+//
+// Thread safety: draw() keeps no state between calls. Calls on different framebuffers may run at
+// once, sharing meshes and textures (only read); two calls on the same framebuffer may not.
 #pragma once
 
 #include <cstdint>

@@ -41,6 +41,9 @@
 // the coarsest level; a non-finite derivative makes every filter that reads derivatives return
 // the coarsest level's single texel (the texture's average). Float textures holding NaN or
 // infinite texels give NaN or infinite results wherever a filter reads them (even at weight 0).
+//
+// Thread safety: sample() only reads the texture and the queries and writes `out`: any number of
+// calls may share a texture at once.
 #pragma once
 
 #include <cstdint>

@@ -7,6 +7,9 @@
 // when the texture says so; every filter works on linear values.
 //
 // The kernels take memory: loading image files is left to the caller (the tools use OpenImageIO).
+//
+// Thread safety: a built Texture never changes; its const members, and sample() and draw() on
+// it, may be used from any number of threads at once.
 #pragma once
 
 #include <cstddef>
