@@ -11,6 +11,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -26,9 +27,12 @@
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
 #include "exact_area_triangles.hpp"
+#include "src/draw_stages.hpp"
 
 namespace edgewise::bench {
 namespace {
+
+using Clock = std::chrono::steady_clock;
 
 constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0003;
 
@@ -159,11 +163,21 @@ void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
     state.PauseTiming();
     target.clear(kClearColor, kClearDepth);
     state.ResumeTiming();
-    last = draw(target, mesh, options);
+    // draw(), stage by stage (kernels/src/draw_stages.hpp), to time its vertex stage apart.
+    detail::DrawCall call = detail::prepare_draw(target, mesh, options);
+    if (!call.has_work()) {
+      state.SkipWithError("the workload draws nothing");
+      break;
+    }
+    const auto start = Clock::now();
+    const detail::ScreenMesh screen = detail::map_to_screen(call, target, mesh, options);
+    const auto mapped = Clock::now();
+    detail::shade_screen_mesh(call, target, screen, options);
     benchmark::DoNotOptimize(target.color_tiles());
     benchmark::ClobberMemory();
-    vertex_seconds += last.vertex_seconds;
-    raster_seconds += last.raster_seconds;
+    raster_seconds += std::chrono::duration<double>(Clock::now() - mapped).count();
+    vertex_seconds += std::chrono::duration<double>(mapped - start).count();
+    last = call.report;
   }
 
   const std::string problem = check(last, isa, triangles, c.area, target);

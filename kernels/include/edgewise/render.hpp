@@ -113,8 +113,6 @@ struct DrawReport {
   std::uint64_t fragments = 0;         // covered samples
   std::uint64_t fragments_passed = 0;  // of those, passing the depth test (and so written)
   std::uint64_t tiles_skipped = 0;     // covered tiles rejected whole by hierarchical depth
-  double vertex_seconds = 0.0;         // transform, clipping and screen mapping
-  double raster_seconds = 0.0;         // setup, coverage, depth and shading
   Isa isa = Isa::reference;
 };
 

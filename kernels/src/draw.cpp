@@ -1,0 +1,182 @@
+// draw(): its arguments checked and its ISA chosen, then its two stages (draw_stages.hpp): the
+// vertex stage (vertex_stage.cpp) and the chosen ISA's shading kernel.
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "draw_stages.hpp"
+#include "framebuffer_access.hpp"
+#include "shade_batch.hpp"
+#include "texture_description.hpp"
+
+namespace edgewise {
+namespace detail {
+namespace {
+
+void validate(const DrawMesh& mesh, const DrawOptions& options) {
+  const std::size_t n = mesh.positions.size();
+  if (!mesh.colors.empty() && mesh.colors.size() != n) {
+    throw std::invalid_argument("draw: " + std::to_string(mesh.colors.size()) + " colours for " +
+                                std::to_string(n) + " positions");
+  }
+  if (!mesh.normals.empty() && mesh.normals.size() != n) {
+    throw std::invalid_argument("draw: " + std::to_string(mesh.normals.size()) + " normals for " +
+                                std::to_string(n) + " positions");
+  }
+  if (options.shading == Shading::diffuse && mesh.normals.empty()) {
+    throw std::invalid_argument("draw: diffuse shading needs normals");
+  }
+  if (options.texture) {
+    if (options.texture->texture == nullptr) {
+      throw std::invalid_argument("draw: the texture option holds no texture");
+    }
+    if (mesh.uvs.size() != n) {
+      throw std::invalid_argument("draw: " + std::to_string(mesh.uvs.size()) + " uvs for " +
+                                  std::to_string(n) + " positions (a texture needs one each)");
+    }
+    detail::validate_sampler(*options.texture->texture, options.texture->sampler, "draw");
+  }
+  const std::size_t corners = mesh.indices.empty() ? n : mesh.indices.size();
+  if (corners % 3 != 0) {
+    throw std::invalid_argument("draw: " + std::to_string(corners) +
+                                " corners is not a multiple of 3");
+  }
+  if (n > UINT32_MAX / 2) throw std::invalid_argument("draw: too many vertices");
+}
+
+Vec3 unit(const Vec3& v) {
+  const double length = std::sqrt(static_cast<double>(v.x) * v.x + static_cast<double>(v.y) * v.y +
+                                  static_cast<double>(v.z) * v.z);
+  if (!(length > 0.0) || !std::isfinite(length)) return {0.0f, 0.0f, 0.0f};  // no direct light
+  return {static_cast<float>(v.x / length), static_cast<float>(v.y / length),
+          static_cast<float>(v.z / length)};
+}
+
+}  // namespace
+
+DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options) {
+  validate(mesh, options);
+  DrawCall call;
+  call.report.isa = resolve_isa(options.isa);
+  call.kernels = &kernel_table(call.report.isa);
+  call.clip = clip_rect(RasterTarget{target.width(), target.height(), options.scissor});
+  const std::size_t corners = mesh.indices.empty() ? mesh.positions.size() : mesh.indices.size();
+  call.report.triangles = corners / 3;
+  return call;
+}
+
+void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& screen,
+                       const DrawOptions& options) {
+  DrawReport& report = call.report;
+  const PixelRect clip = call.clip;
+  // The texture flattened for the kernels once per draw.
+  std::optional<FlatTexture> flat_texture;
+  if (options.texture) flat_texture.emplace(*options.texture->texture);
+  ShadeBatch batch{{screen.positions.data(), screen.positions.size(), screen.indices.data(),
+                    screen.indices.size() / 3, clip, options.cull, nullptr},
+                   screen.depth.data(),
+                   screen.clip_w.data(),
+                   screen.colors.data(),
+                   options.shading == Shading::diffuse ? screen.normals.data() : nullptr,
+                   options.shading,
+                   options.interpolation,
+                   options.perspective,
+                   options.depth_test,
+                   options.depth_write,
+                   unit(options.light_direction),
+                   options.ambient,
+                   FramebufferAccess::color(target),
+                   FramebufferAccess::depth(target),
+                   target.tiles_x(),
+                   FramebufferAccess::tile_max_depth(target),
+                   options.hierarchical_depth};
+  if (options.texture) {
+    batch.uvs = screen.uvs.data();
+    batch.texture = options.texture->texture;
+    batch.texture_description = flat_texture ? &flat_texture->description() : nullptr;
+    batch.sampler = options.texture->sampler;
+    batch.derivatives = options.texture->derivatives;
+  }
+  RasterReport raster;
+  ShadeCounts counts;
+  if (!screen.indices.empty()) call.kernels->shade(batch, raster, counts);
+  report.rasterized = raster.triangles;
+  report.culled += raster.culled;
+  report.errors += raster.errors;
+  report.fragments = counts.fragments;
+  report.fragments_passed = counts.passed;
+  report.tiles_skipped = counts.tiles_skipped;
+}
+
+}  // namespace detail
+
+DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options) {
+  detail::DrawCall call = detail::prepare_draw(target, mesh, options);
+  if (!call.has_work()) return call.report;
+  const detail::ScreenMesh screen = detail::map_to_screen(call, target, mesh, options);
+  detail::shade_screen_mesh(call, target, screen, options);
+  return call.report;
+}
+
+std::string_view depth_test_name(DepthTest test) {
+  switch (test) {
+    case DepthTest::less:
+      return "less";
+    case DepthTest::less_equal:
+      return "less_equal";
+    case DepthTest::greater:
+      return "greater";
+    case DepthTest::always:
+      return "always";
+    case DepthTest::never:
+      return "never";
+  }
+  return "unknown";
+}
+
+std::optional<DepthTest> parse_depth_test(std::string_view name) {
+  for (DepthTest test : {DepthTest::less, DepthTest::less_equal, DepthTest::greater,
+                         DepthTest::always, DepthTest::never}) {
+    if (depth_test_name(test) == name) return test;
+  }
+  return std::nullopt;
+}
+
+std::string_view shading_name(Shading shading) {
+  switch (shading) {
+    case Shading::flat:
+      return "flat";
+    case Shading::gouraud:
+      return "gouraud";
+    case Shading::diffuse:
+      return "diffuse";
+  }
+  return "unknown";
+}
+
+std::optional<Shading> parse_shading(std::string_view name) {
+  for (Shading shading : {Shading::flat, Shading::gouraud, Shading::diffuse}) {
+    if (shading_name(shading) == name) return shading;
+  }
+  return std::nullopt;
+}
+
+std::string_view texture_derivatives_name(TextureDerivatives derivatives) {
+  switch (derivatives) {
+    case TextureDerivatives::quad:
+      return "quad";
+    case TextureDerivatives::analytic:
+      return "analytic";
+  }
+  return "unknown";
+}
+
+std::optional<TextureDerivatives> parse_texture_derivatives(std::string_view name) {
+  for (TextureDerivatives d : {TextureDerivatives::quad, TextureDerivatives::analytic}) {
+    if (texture_derivatives_name(d) == name) return d;
+  }
+  return std::nullopt;
+}
+
+}  // namespace edgewise

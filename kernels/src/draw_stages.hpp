@@ -1,0 +1,46 @@
+// draw()'s stages, each a function of its own, for the project's tools and benchmarks that time
+// them apart: draw() is exactly prepare_draw(), then (for a call with work) map_to_screen() and
+// shade_screen_mesh().
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "edgewise/render.hpp"
+#include "kernel_table.hpp"
+
+namespace edgewise::detail {
+
+// Screen-space vertices and triangles, as the shading kernels take them.
+struct ScreenMesh {
+  std::vector<Vec2> positions;  // snapped to 1/256 px
+  std::vector<float> depth;
+  std::vector<float> clip_w;
+  std::vector<Vec4> colors;
+  std::vector<Vec3> normals;
+  std::vector<Vec2> uvs;  // textured draws only
+  std::vector<std::uint32_t> indices;
+};
+
+// A checked call: its ISA's kernels, the clip rectangle, and the report so far.
+struct DrawCall {
+  const KernelTable* kernels = nullptr;
+  PixelRect clip;
+  DrawReport report;  // isa and triangles filled in
+  bool has_work() const { return !clip.empty() && report.triangles != 0; }
+};
+
+// Checks the arguments (render.hpp says what throws) and chooses the ISA.
+DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
+
+// The vertex stage: transform, clipping, screen mapping and snapping of every triangle, counted
+// into call.report.
+ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
+                         const DrawOptions& options);
+
+// The screen mesh through the ISA's shading kernel: setup, coverage, depth test and shading.
+void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& screen,
+                       const DrawOptions& options);
+
+}  // namespace edgewise::detail
