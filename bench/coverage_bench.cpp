@@ -74,7 +74,7 @@ void register_coverage_benchmarks() {
   for (Isa isa : supported_isas()) {
     for (const AreaCase& c : kAreas) {
       const std::string name =
-          "Coverage/" + std::string(isa_name(isa)) + "/area:" + std::to_string(c.area);
+          "Coverage/" + std::string(name_of(isa)) + "/area:" + std::to_string(c.area);
       benchmark::RegisterBenchmark(name.c_str(), coverage, isa, c)->Unit(benchmark::kMicrosecond);
     }
   }

@@ -17,11 +17,11 @@ int main(int argc, char** argv) {
   std::string supported;
   for (edgewise::Isa isa : edgewise::supported_isas()) {
     if (!supported.empty()) supported += ",";
-    supported += edgewise::isa_name(isa);
+    supported += edgewise::name_of(isa);
   }
   benchmark::AddCustomContext("edgewise_supported_isas", supported);
   benchmark::AddCustomContext("edgewise_active_isa",
-                              std::string(edgewise::isa_name(edgewise::active_isa())));
+                              std::string(edgewise::name_of(edgewise::active_isa())));
 
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

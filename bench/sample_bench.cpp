@@ -154,9 +154,8 @@ void register_sample_benchmarks() {
     for (Isa isa : supported_isas()) {
       for (int f = 0; f <= static_cast<int>(TextureFilter::ewa); ++f) {
         const auto filter = static_cast<TextureFilter>(f);
-        const std::string name = "Sample/" + std::string(isa_name(isa)) + "/" +
-                                 std::string(texture_filter_name(filter)) + "/" +
-                                 stream_name(stream);
+        const std::string name = "Sample/" + std::string(name_of(isa)) + "/" +
+                                 std::string(name_of(filter)) + "/" + stream_name(stream);
         benchmark::RegisterBenchmark(name.c_str(), sample_stream, isa, filter, stream)
             ->Unit(benchmark::kMillisecond);
       }

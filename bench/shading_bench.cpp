@@ -244,14 +244,14 @@ std::string area_label(const ShadingCase& c) {
 void register_shading_benchmarks() {
   for (Isa isa : supported_isas()) {
     for (const ShadingCase& c : kCases) {
-      const std::string name = joined({"Shading", isa_name(isa), area_label(c)});
+      const std::string name = joined({"Shading", name_of(isa), area_label(c)});
       benchmark::RegisterBenchmark(name.c_str(), shading, isa, c)->Unit(benchmark::kMicrosecond);
     }
   }
   for (Isa isa : supported_isas()) {
     if (isa == Isa::reference) continue;  // the reference never skips tiles
     for (const ShadingCase& c : kCases) {
-      const std::string name = joined({"ShadingWithoutTileDepth", isa_name(isa), area_label(c)});
+      const std::string name = joined({"ShadingWithoutTileDepth", name_of(isa), area_label(c)});
       benchmark::RegisterBenchmark(name.c_str(), shading_without_tile_depth, isa, c)
           ->Unit(benchmark::kMicrosecond);
     }
@@ -264,9 +264,8 @@ void register_shading_benchmarks() {
               std::end(kMethodAreas)) {
             continue;
           }
-          const std::string name =
-              joined({"ShadingMethod", isa_name(isa), interpolation_method_name(method),
-                      perspective_name(perspective), area_label(c)});
+          const std::string name = joined({"ShadingMethod", name_of(isa), name_of(method),
+                                           name_of(perspective), area_label(c)});
           benchmark::RegisterBenchmark(name.c_str(), shading_method, isa, c, method, perspective)
               ->Unit(benchmark::kMicrosecond)
               ->MinTime(kMethodMinTimeSeconds);

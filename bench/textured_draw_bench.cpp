@@ -90,9 +90,9 @@ void register_textured_draw_benchmarks() {
                             filter == TextureFilter::trilinear ||
                             (filter == TextureFilter::anisotropic && isa != Isa::reference);
         if (!widest && !(common && derivatives == TextureDerivatives::quad)) continue;
-        const std::string name = "TexturedDraw/" + std::string(isa_name(isa)) + "/" +
-                                 std::string(texture_filter_name(filter)) + "/" +
-                                 std::string(texture_derivatives_name(derivatives));
+        const std::string name = "TexturedDraw/" + std::string(name_of(isa)) + "/" +
+                                 std::string(name_of(filter)) + "/" +
+                                 std::string(name_of(derivatives));
         benchmark::RegisterBenchmark(name.c_str(), textured_draw, isa, filter, derivatives)
             ->Unit(benchmark::kMillisecond);
       }

@@ -258,8 +258,8 @@ std::string describe_call(const RasterCall& call) {
     return ::testing::AssertionSuccess();
   }
   ::testing::AssertionResult failure = ::testing::AssertionFailure();
-  failure << isa_name(actual.report.isa) << " differs from " << isa_name(expected.report.isa)
-          << " [" << describe_call(call) << "]";
+  failure << name_of(actual.report.isa) << " differs from " << name_of(expected.report.isa) << " ["
+          << describe_call(call) << "]";
   for (std::uint32_t t = 0; t < call.triangle_count(); ++t) {
     const bool status_differs = expected.statuses[t] != actual.statuses[t];
     if (!status_differs && same_tiles_of(expected, actual, t)) continue;

@@ -143,7 +143,7 @@ void run_differential(Isa isa, std::string_view source_name) {
   }
   std::printf("[ %-8s ] %s: %" PRIu64 " triangles (%" PRIu64 " drawn, %" PRIu64
               " samples covered), seed %" PRIu64 "\n",
-              std::string(isa_name(isa)).c_str(), std::string(source.name).c_str(), count, drawn,
+              std::string(name_of(isa)).c_str(), std::string(source.name).c_str(), count, drawn,
               covered, seed);
 }
 

@@ -44,7 +44,7 @@ TEST(IsaDispatch, CompiledAndSupportedListsAgree) {
   // The build's list (cmake/isas.cmake) and the code's (kernels/src/isa_list.hpp) agree.
   std::string names = "reference";
   for (Isa isa : compiled.subspan(1))
-    names += "," + std::string(isa_name(isa));
+    names += "," + std::string(name_of(isa));
   EXPECT_EQ(names, "reference," EDGEWISE_CMAKE_ISAS);
 
   const std::vector<Isa> supported = supported_isas();
@@ -53,7 +53,7 @@ TEST(IsaDispatch, CompiledAndSupportedListsAgree) {
   EXPECT_TRUE(std::includes(compiled.begin(), compiled.end(), supported.begin(), supported.end()));
   for (Isa isa : kEveryIsa) {
     const bool listed = std::find(supported.begin(), supported.end(), isa) != supported.end();
-    EXPECT_EQ(isa_supported(isa), listed) << isa_name(isa);
+    EXPECT_EQ(isa_supported(isa), listed) << name_of(isa);
   }
   EXPECT_EQ(best_isa(), supported.back());
 }
@@ -61,15 +61,15 @@ TEST(IsaDispatch, CompiledAndSupportedListsAgree) {
 TEST(IsaDispatch, NamesRoundTrip) {
   EXPECT_GE(kEveryIsa.size(), compiled_isas().size());
   for (Isa isa : kEveryIsa)
-    EXPECT_EQ(parse_isa(isa_name(isa)), isa) << isa_name(isa);
-  EXPECT_EQ(parse_isa("sse4.1"), std::nullopt);
-  EXPECT_EQ(parse_isa(""), std::nullopt);
-  EXPECT_EQ(parse_isa("avx512"), std::nullopt);
+    EXPECT_EQ(parse_name<Isa>(name_of(isa)), isa) << name_of(isa);
+  EXPECT_EQ(parse_name<Isa>("sse4.1"), std::nullopt);
+  EXPECT_EQ(parse_name<Isa>(""), std::nullopt);
+  EXPECT_EQ(parse_name<Isa>("avx512"), std::nullopt);
 }
 
 TEST(IsaDispatch, ParseSupportedIsaExplainsWhatIsAvailable) {
   for (Isa isa : supported_isas())
-    EXPECT_EQ(parse_supported_isa(isa_name(isa)), isa);
+    EXPECT_EQ(parse_supported_isa(name_of(isa)), isa);
   try {
     parse_supported_isa("avx9");
     FAIL() << "an unknown name was accepted";
@@ -81,7 +81,7 @@ TEST(IsaDispatch, ParseSupportedIsaExplainsWhatIsAvailable) {
   }
   for (Isa isa : compiled_isas()) {
     if (!isa_supported(isa)) {
-      EXPECT_THROW(parse_supported_isa(isa_name(isa)), std::invalid_argument);
+      EXPECT_THROW(parse_supported_isa(name_of(isa)), std::invalid_argument);
     }
   }
   EXPECT_THROW(parse_supported_isa("neon_or_not"), std::invalid_argument);
@@ -100,8 +100,8 @@ TEST(IsaDispatch, UnsupportedIsaCannotBeForced) {
   for (Isa isa : kEveryIsa) {
     if (isa_supported(isa)) continue;
     ++unsupported;
-    EXPECT_THROW(force_isa(isa), std::invalid_argument) << isa_name(isa);
-    EXPECT_THROW(ScopedIsa{isa}, std::invalid_argument) << isa_name(isa);
+    EXPECT_THROW(force_isa(isa), std::invalid_argument) << name_of(isa);
+    EXPECT_THROW(ScopedIsa{isa}, std::invalid_argument) << name_of(isa);
     EXPECT_EQ(active_isa(), before);
   }
   EXPECT_GT(unsupported, 0);  // no build has both x86 and AArch64 kernels
@@ -112,17 +112,17 @@ TEST(IsaDispatch, UnsupportedIsaCannotBeForced) {
 TEST(IsaDispatch, EveryEntryPointRefusesAnUnsupportedIsaAlike) {
   std::string supported;
   for (Isa isa : supported_isas())
-    supported += (supported.empty() ? "" : ", ") + std::string(isa_name(isa));
+    supported += (supported.empty() ? "" : ", ") + std::string(name_of(isa));
   int unsupported = 0;
   for (Isa isa : kEveryIsa) {
     if (isa_supported(isa)) continue;
     ++unsupported;
-    const std::string expected = "ISA " + std::string(isa_name(isa)) +
+    const std::string expected = "ISA " + std::string(name_of(isa)) +
                                  " is not supported on this machine; it supports " + supported;
     const auto expect_refusal = [&](const char* entry_point, auto&& call) {
       try {
         call();
-        ADD_FAILURE() << entry_point << " accepted " << isa_name(isa);
+        ADD_FAILURE() << entry_point << " accepted " << name_of(isa);
       } catch (const std::invalid_argument& error) {
         EXPECT_NE(std::string(error.what()).find(expected), std::string::npos)
             << entry_point << ": " << error.what();
@@ -144,7 +144,7 @@ TEST(IsaDispatch, EveryEntryPointRefusesAnUnsupportedIsaAlike) {
     std::vector<Vec4> results(1);
     expect_refusal("sample", [&] { edgewise::sample(texture, {}, queries, results, isa); });
     expect_refusal("force_isa", [&] { force_isa(isa); });
-    expect_refusal("parse_supported_isa", [&] { parse_supported_isa(isa_name(isa)); });
+    expect_refusal("parse_supported_isa", [&] { parse_supported_isa(name_of(isa)); });
   }
   EXPECT_GT(unsupported, 0);  // no build has both x86 and AArch64 kernels
 }

@@ -25,7 +25,7 @@ const RasterTarget kTarget{16, 16, {}};
 TEST(IsaEnvironment, NamedIsaRunsOrIsRejected) {
   const char* value = std::getenv("EDGEWISE_ISA");
   if (value == nullptr) GTEST_SKIP() << "run with EDGEWISE_ISA set (ctest sets it)";
-  const std::optional<Isa> named = *value == '\0' ? best_isa() : parse_isa(value);
+  const std::optional<Isa> named = *value == '\0' ? best_isa() : parse_name<Isa>(value);
   NullSink sink;
 
   if (named && isa_supported(*named)) {
@@ -41,7 +41,7 @@ TEST(IsaEnvironment, NamedIsaRunsOrIsRejected) {
       EXPECT_NE(message.find("EDGEWISE_ISA=" + std::string(value)), std::string::npos) << message;
       EXPECT_NE(message.find(named ? "not supported" : "unknown"), std::string::npos) << message;
       for (Isa isa : supported_isas()) {
-        EXPECT_NE(message.find(isa_name(isa)), std::string::npos) << message;
+        EXPECT_NE(message.find(name_of(isa)), std::string::npos) << message;
       }
     }
     EXPECT_THROW(rasterize(kTriangle, {}, kTarget, {}, sink), std::invalid_argument);

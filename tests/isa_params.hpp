@@ -14,7 +14,7 @@
 namespace edgewise {
 // GoogleTest prints parameters and values through PrintTo found by argument-dependent lookup.
 inline void PrintTo(Isa isa, std::ostream* out) {
-  *out << isa_name(isa);
+  *out << name_of(isa);
 }
 }  // namespace edgewise
 
@@ -24,20 +24,20 @@ class IsaTest : public ::testing::TestWithParam<Isa> {
  protected:
   void SetUp() override {
     if (!isa_supported(GetParam())) {
-      GTEST_SKIP() << isa_name(GetParam()) << " is compiled in but this CPU cannot run it";
+      GTEST_SKIP() << name_of(GetParam()) << " is compiled in but this CPU cannot run it";
     }
   }
   Isa isa() const { return GetParam(); }
 };
 
 inline std::string isa_test_name(const ::testing::TestParamInfo<Isa>& info) {
-  return std::string(isa_name(info.param));
+  return std::string(name_of(info.param));
 }
 
-// Every value of the Isa enum, compiled here or not (isa_name() names each of them).
+// Every value of the Isa enum, compiled here or not (name_of() names each of them).
 inline std::vector<Isa> every_isa_value() {
   std::vector<Isa> isas;
-  for (int i = 0; isa_name(static_cast<Isa>(i)) != "unknown"; ++i)
+  for (int i = 0; name_of(static_cast<Isa>(i)) != "unknown"; ++i)
     isas.push_back(static_cast<Isa>(i));
   return isas;
 }

@@ -98,7 +98,7 @@ void check_meshes(Isa isa, Mesh (*make)(Random&, const PixelRect&), std::uint64_
   // The meshes must really land on the targets for the test to mean anything.
   EXPECT_GT(inside, 100u * kMeshesPerTest);
   std::printf("[ %-8s ] %d meshes, %" PRIu64 " triangles, %" PRIu64 " samples inside\n",
-              std::string(isa_name(isa)).c_str(), kMeshesPerTest, triangles, inside);
+              std::string(name_of(isa)).c_str(), kMeshesPerTest, triangles, inside);
 }
 
 TEST_P(Watertight, JitteredGrids) {

@@ -259,19 +259,19 @@ bool compare_isas(std::span<const Vec2> vertices, const RasterTarget& target) {
         if (mismatches++ == 0) {
           const Vec2* v = &vertices[3 * (first + t)];
           std::cout << std::setprecision(9)  // enough digits to read back the same floats
-                    << isa_name(isa) << ": differs from the reference on triangle " << first + t
+                    << name_of(isa) << ": differs from the reference on triangle " << first + t
                     << " (" << v[0].x << ' ' << v[0].y << ' ' << v[1].x << ' ' << v[1].y << ' '
                     << v[2].x << ' ' << v[2].y << ")\n  reference: " << expected[t].line << " ["
-                    << describe(expected[t].status) << "]\n  " << isa_name(isa) << ": "
+                    << describe(expected[t].status) << "]\n  " << name_of(isa) << ": "
                     << actual[t].line << " [" << describe(actual[t].status) << "]\n";
         }
       }
     }
     if (mismatches == 0) {
-      std::cout << isa_name(isa) << ": identical to the reference on " << triangles
-                << " triangles (" << pixels << " covered pixels)\n";
+      std::cout << name_of(isa) << ": identical to the reference on " << triangles << " triangles ("
+                << pixels << " covered pixels)\n";
     } else {
-      std::cout << isa_name(isa) << ": " << mismatches << " of " << triangles
+      std::cout << name_of(isa) << ": " << mismatches << " of " << triangles
                 << " triangles differ from the reference\n";
       all_equal = false;
     }

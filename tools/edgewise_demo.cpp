@@ -437,7 +437,7 @@ void print_throughput(std::span<const Isa> isas) {
       if (isa == Isa::reference) reference_rate = t.triangles_per_second;
       std::ostringstream ratio;
       ratio << std::fixed << std::setprecision(1) << t.triangles_per_second / reference_rate << "x";
-      std::cout << std::setw(8) << w.area << std::setw(11) << isa_name(isa) << std::setw(15)
+      std::cout << std::setw(8) << w.area << std::setw(11) << name_of(isa) << std::setw(15)
                 << si(t.triangles_per_second) + "/s" << std::setw(14)
                 << si(t.pixels_per_second) + "/s" << (reference_rate > 0 ? ratio.str() : "-")
                 << '\n';
@@ -465,9 +465,9 @@ int run(std::span<char*> args) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Isa> isas = supported_isas();
   const Isa active = active_isa();
-  std::cout << "edgewise-demo: active ISA " << isa_name(active) << " (supported:";
+  std::cout << "edgewise-demo: active ISA " << name_of(active) << " (supported:";
   for (Isa isa : isas)
-    std::cout << ' ' << isa_name(isa);
+    std::cout << ' ' << name_of(isa);
   std::cout << ")\n";
 
   const Pattern pattern = make_pattern();
@@ -486,7 +486,7 @@ int run(std::span<char*> args) {
     const std::vector<TileCoverage> tiles = cover(pattern, isa);
     const bool same = same_tiles(tiles, reference);
     ok = ok && same;
-    std::cout << "  " << std::left << std::setw(10) << isa_name(isa)
+    std::cout << "  " << std::left << std::setw(10) << name_of(isa)
               << (isa == Isa::reference ? "is the reference"
                   : same                ? "identical"
                                         : "DIFFERENT")
@@ -504,7 +504,7 @@ int run(std::span<char*> args) {
   ok = ok && grid.gaps == 0 && grid.overlaps == 0 && fan.overlaps == 0;
 
   compose(pattern, paint(pattern, shown)).write_png(output);
-  std::cout << "wrote " << output << " (rendered with " << isa_name(active) << ")\n";
+  std::cout << "wrote " << output << " (rendered with " << name_of(active) << ")\n";
 
   print_throughput(isas);
   const double elapsed =

@@ -219,9 +219,8 @@ void print_setup(const LoadedScene& loaded, const RenderSettings& settings,
     std::cout << "fov " << view.vertical_fov_degrees;
   }
   std::cout << ", near " << view.near_plane << ", far " << view.far_plane << '\n'
-            << "  pipeline  " << shading_name(d.shading) << " shading, "
-            << interpolation_method_name(d.interpolation) << ", perspective "
-            << perspective_name(d.perspective) << ", depth " << depth_test_name(d.depth_test)
+            << "  pipeline  " << name_of(d.shading) << " shading, " << name_of(d.interpolation)
+            << ", perspective " << name_of(d.perspective) << ", depth " << name_of(d.depth_test)
             << (d.depth_write ? " with writes" : " without writes") << ", cull "
             << cull_mode_name(d.cull) << ", light " << vector_text(d.light_direction) << '\n';
   if (texture != nullptr) {
@@ -251,7 +250,7 @@ int render(const RenderSettings& settings, const LoadedScene& loaded, const Draw
   DrawOptions options = draw_options(settings, camera, texture);
   const Isa isa = options.isa.value_or(active_isa());
   options.isa = isa;
-  print_setup(loaded, settings, camera, texture, "ISA " + std::string(isa_name(isa)));
+  print_setup(loaded, settings, camera, texture, "ISA " + std::string(name_of(isa)));
 
   Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
   const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
@@ -357,7 +356,7 @@ int compare_isas(const RenderSettings& settings, const LoadedScene& loaded, cons
     const Difference d = compare_images(rgba, depth, reference_rgba, reference_depth);
     const bool same = same_counts(times.report, reference.report);
     print_isa_row(
-        {std::string(isa_name(isa)), milliseconds(times.frame), milliseconds(times.fastest_frame),
+        {std::string(name_of(isa)), milliseconds(times.frame), milliseconds(times.fastest_frame),
          std::to_string(d.depth_mismatches), std::to_string(d.colour_pixels),
          std::to_string(d.max_colour_codes) + (d.max_colour_codes == 1 ? " code" : " codes"),
          same ? "same" : "DIFFER"});
@@ -386,7 +385,7 @@ int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded
   DrawOptions options = draw_options(settings, camera, &texture);
   const Isa isa = options.isa.value_or(active_isa());
   options.isa = isa;
-  print_setup(loaded, settings, camera, &texture, "ISA " + std::string(isa_name(isa)));
+  print_setup(loaded, settings, camera, &texture, "ISA " + std::string(name_of(isa)));
 
   Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
   std::cout << "each filter"
@@ -402,14 +401,14 @@ int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded
     std::string image = "  ";
     if (settings.output) {
       std::string suffix = "-";
-      suffix += texture_filter_name(filter);
+      suffix += name_of(filter);
       const std::string path = path_with_suffix(*settings.output, suffix);
       write_image(path, framebuffer);
       image += path;
     } else {
       image += '-';
     }
-    print_filter_row({std::string(texture_filter_name(filter)), milliseconds(times.frame),
+    print_filter_row({std::string(name_of(filter)), milliseconds(times.frame),
                       milliseconds(times.fastest_frame), milliseconds(times.raster),
                       std::to_string(times.report.fragments), image});
     report = times.report;

@@ -66,7 +66,7 @@ std::string texture_description(const SampleSettings& settings, const LoadedText
       << loaded.pixel_type << " -> "
       << (texture.format() == TexelFormat::rgba8 ? "rgba8" : "rgba32f")
       << (settings.srgb ? " sRGB" : " linear") << ", " << texture.mip_levels().size()
-      << " mip levels (" << pyramid_filter_name(settings.pyramid) << ")";
+      << " mip levels (" << name_of(settings.pyramid) << ")";
   if (!texture.ripmap_levels().empty()) {
     out << ", ripmaps " << texture.ripmap_columns() << "x"
         << texture.ripmap_levels().size() / static_cast<std::size_t>(texture.ripmap_columns());
@@ -77,10 +77,10 @@ std::string texture_description(const SampleSettings& settings, const LoadedText
 
 std::string sampler_description(const SamplerOptions& options, Isa isa) {
   std::ostringstream out;
-  out << texture_filter_name(options.filter) << ", wrap " << wrap_mode_name(options.wrap_s) << "/"
-      << wrap_mode_name(options.wrap_t) << ", lod " << lod_formula_name(options.lod) << ", bias "
+  out << name_of(options.filter) << ", wrap " << name_of(options.wrap_s) << "/"
+      << name_of(options.wrap_t) << ", lod " << name_of(options.lod) << ", bias "
       << options.lod_bias << ", max aniso " << options.max_anisotropy << ", taps "
-      << options.supersample_taps << ", ISA " << isa_name(isa);
+      << options.supersample_taps << ", ISA " << name_of(isa);
   return out.str();
 }
 

@@ -90,7 +90,7 @@ void mark_pareto_front(std::span<ScoreRow> rows) {
 std::string isa_list(std::span<const Isa> isas) {
   std::string text;
   for (Isa isa : isas)
-    text += (text.empty() ? "" : ", ") + std::string(isa_name(isa));
+    text += (text.empty() ? "" : ", ") + std::string(name_of(isa));
   return text;
 }
 
@@ -105,7 +105,7 @@ std::vector<ScoreRow> score_scene(const SceneRun& scene, const Texture& texture,
     for (const FilterMethod& method : methods) {
       const double seconds = median_seconds(
           repetitions, [&] { sample(texture, method.options, scene.queries, colours, isa); });
-      rows.push_back(scene.score(method.name, isa_name(isa), colours, seconds));
+      rows.push_back(scene.score(method.name, name_of(isa), colours, seconds));
     }
     if (drawn == nullptr) continue;
     for (TextureDerivatives derivatives :
@@ -114,9 +114,8 @@ std::vector<ScoreRow> score_scene(const SceneRun& scene, const Texture& texture,
         const double seconds = median_seconds(
             repetitions, [&] { drawn->draw(texture, method.options, derivatives, isa); });
         drawn->read(colours);
-        const std::string name =
-            "draw_" + std::string(texture_derivatives_name(derivatives)) + "_" + method.name;
-        rows.push_back(scene.score(name, isa_name(isa), colours, seconds));
+        const std::string name = "draw_" + std::string(name_of(derivatives)) + "_" + method.name;
+        rows.push_back(scene.score(name, name_of(isa), colours, seconds));
       }
     }
   }
@@ -135,9 +134,9 @@ void print_preamble(const QualitySettings& settings, const std::string& size,
                     std::span<const Isa> isas, const std::optional<std::filesystem::path>& images) {
   std::cout << "edgewise-texture-quality: " << size << " screen, ISA " << isa_list(isas)
             << (settings.peer ? " and OpenImageIO's TextureSystem" : "") << ", "
-            << pyramid_filter_name(settings.pyramid) << " pyramid, max anisotropy "
+            << name_of(settings.pyramid) << " pyramid, max anisotropy "
             << settings.methods.max_anisotropy << ", level of detail "
-            << lod_formula_name(settings.methods.lod) << " with bias " << settings.methods.lod_bias
+            << name_of(settings.methods.lod) << " with bias " << settings.methods.lod_bias
             << ", repeat wrap\n"
             << "  errors: against ground truth, linear units over R, G, B; front: '*' marks the "
                "Pareto front (lowest RMSE for its time)\n"

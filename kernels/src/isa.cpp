@@ -58,7 +58,7 @@ std::string supported_list() {
   std::string names;
   for (Isa isa : supported_isas()) {
     if (!names.empty()) names += ", ";
-    names += isa_name(isa);
+    names += name_of(isa);
   }
   return names;
 }
@@ -75,7 +75,7 @@ std::string unsupported_isa(std::string_view name) {
 Isa isa_from_environment() {
   const char* value = std::getenv("EDGEWISE_ISA");
   if (value == nullptr || *value == '\0') return best_isa();
-  const std::optional<Isa> isa = parse_isa(value);
+  const std::optional<Isa> isa = parse_name<Isa>(value);
   if (!isa)
     throw std::invalid_argument(std::string("EDGEWISE_ISA=") + value + ": " + unknown_isa(value));
   if (!isa_supported(*isa)) {
@@ -87,16 +87,14 @@ Isa isa_from_environment() {
 
 }  // namespace
 
-std::string_view isa_name(Isa isa) {
+std::string_view name_of(Isa isa) {
   const auto index = static_cast<std::size_t>(isa);
   return index < std::size(kNames) ? kNames[index] : "unknown";
 }
 
-std::optional<Isa> parse_isa(std::string_view name) {
-  for (Isa isa : kEvery) {
-    if (name == isa_name(isa)) return isa;
-  }
-  return std::nullopt;
+template <>
+std::span<const Isa> values_of<Isa>() {
+  return kEvery;
 }
 
 std::span<const Isa> compiled_isas() {
@@ -131,7 +129,7 @@ Isa active_isa() {
 
 void force_isa(std::optional<Isa> isa) {
   if (isa && !isa_supported(*isa)) {
-    throw std::invalid_argument("force_isa: " + unsupported_isa(isa_name(*isa)));
+    throw std::invalid_argument("force_isa: " + unsupported_isa(name_of(*isa)));
   }
   forced.store(isa ? static_cast<int>(*isa) : kNoOverride, std::memory_order_relaxed);
 }
@@ -139,8 +137,7 @@ void force_isa(std::optional<Isa> isa) {
 Isa resolve_isa(std::optional<Isa> requested) {
   // An explicit ISA must not consult EDGEWISE_ISA (which may name one this CPU lacks).
   if (!requested) return active_isa();
-  if (!isa_supported(*requested))
-    throw std::invalid_argument(unsupported_isa(isa_name(*requested)));
+  if (!isa_supported(*requested)) throw std::invalid_argument(unsupported_isa(name_of(*requested)));
   return *requested;
 }
 
@@ -155,7 +152,7 @@ ScopedIsa::~ScopedIsa() {
 }
 
 Isa parse_supported_isa(std::string_view name) {
-  const std::optional<Isa> isa = parse_isa(name);
+  const std::optional<Isa> isa = parse_name<Isa>(name);
   if (!isa) throw std::invalid_argument(unknown_isa(name));
   if (!isa_supported(*isa)) throw std::invalid_argument(unsupported_isa(name));
   return *isa;

@@ -1,6 +1,6 @@
 // The instruction sets, listed once for the code (cmake/isas.cmake lists them for the build;
 // tests/isa_dispatch_test.cpp fails if the two lists disagree). Everything per ISA follows from
-// these lists: compiled_isas(), the CPU checks, isa_name(), the kernel tables and the dispatch.
+// these lists: compiled_isas(), the CPU checks, name_of(), the kernel tables and the dispatch.
 #pragma once
 
 #include "edgewise/isa.hpp"

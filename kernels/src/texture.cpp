@@ -158,21 +158,4 @@ void Texture::linear_texel(const TextureLevel& level, std::int32_t x, std::int32
   out[3] = code[3] / 255.0f;
 }
 
-std::string_view pyramid_filter_name(PyramidFilter filter) {
-  switch (filter) {
-    case PyramidFilter::box:
-      return "box";
-    case PyramidFilter::lanczos3:
-      return "lanczos3";
-  }
-  return "unknown";
-}
-
-std::optional<PyramidFilter> parse_pyramid_filter(std::string_view name) {
-  for (PyramidFilter filter : {PyramidFilter::box, PyramidFilter::lanczos3}) {
-    if (pyramid_filter_name(filter) == name) return filter;
-  }
-  return std::nullopt;
-}
-
 }  // namespace edgewise

@@ -86,7 +86,7 @@ TEST_P(ClipGuardBand, ClippedTrianglesStayInsideTheGuardBandAndViewport) {
   EXPECT_GT(pixels, 1000u);
   std::printf("[ %-8s ] %" PRIu64 " triangles drawn, %" PRIu64
               " pixels, largest |screen coordinate| %.6f (bound %.6f)\n",
-              std::string(isa_name(isa())).c_str(), drawn, pixels, largest, kScreenBound);
+              std::string(name_of(isa())).c_str(), drawn, pixels, largest, kScreenBound);
 }
 
 EDGEWISE_INSTANTIATE_PER_ISA(ClipGuardBand, every_isa());

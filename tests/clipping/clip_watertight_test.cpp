@@ -204,7 +204,7 @@ TEST_P(ClipWatertight, GridAcrossClipPlanes) {
     EXPECT_LT(inside, static_cast<std::uint64_t>(vp.width * vp.height));
     std::printf("[ %-8s ] %s: %zu triangles -> %zu, %" PRIu64 " crossings, %" PRIu64
                 " pixels inside, %" PRIu64 " within the %.3g px margin\n",
-                std::string(isa_name(isa())).c_str(), scene.name, built.indices.size() / 3,
+                std::string(name_of(isa())).c_str(), scene.name, built.indices.size() / 3,
                 mesh.source.size(), crossings, inside, boundary, margin);
   }
 }

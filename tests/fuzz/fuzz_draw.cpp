@@ -545,8 +545,7 @@ void print_texture(const Case& c) {
   std::fprintf(stderr,
                "texture %s %dx%d, %s pyramid, ripmaps %s, summed-area table %s, texels %s "
                "(seed %" PRIu32 ", float scale 2^%d), palette",
-               format_name(t), t.width, t.height,
-               std::string(pyramid_filter_name(t.build.filter)).c_str(),
+               format_name(t), t.width, t.height, std::string(name_of(t.build.filter)).c_str(),
                t.build.ripmaps ? "yes" : "no", t.build.summed_area_table ? "yes" : "no",
                t.random_layout ? "at random palette entries" : "cycling through the palette",
                t.seed, t.scale_exponent);
@@ -556,12 +555,10 @@ void print_texture(const Case& c) {
                "%s\nfilter %s, wrap %s/%s, lod %s, lod_bias %.9g, max_anisotropy %d, "
                "supersample_taps %d (variant %" PRIu32 "), derivatives %s\n",
                c.texture ? "" : " (not passed: a null texture)",
-               std::string(texture_filter_name(o.filter)).c_str(),
-               std::string(wrap_mode_name(o.wrap_s)).c_str(),
-               std::string(wrap_mode_name(o.wrap_t)).c_str(),
-               std::string(lod_formula_name(o.lod)).c_str(), static_cast<double>(o.lod_bias),
-               o.max_anisotropy, o.supersample_taps, t.variant,
-               std::string(texture_derivatives_name(d.derivatives)).c_str());
+               std::string(name_of(o.filter)).c_str(), std::string(name_of(o.wrap_s)).c_str(),
+               std::string(name_of(o.wrap_t)).c_str(), std::string(name_of(o.lod)).c_str(),
+               static_cast<double>(o.lod_bias), o.max_anisotropy, o.supersample_taps, t.variant,
+               std::string(name_of(d.derivatives)).c_str());
 }
 
 void print_case(const Case& c) {
@@ -578,10 +575,10 @@ void print_case(const Case& c) {
                static_cast<double>(c.clear_depth), static_cast<double>(c.clear_depth),
                static_cast<double>(c.clear_color.x), static_cast<double>(c.clear_color.y),
                static_cast<double>(c.clear_color.z), static_cast<double>(c.clear_color.w),
-               static_cast<int>(o.cull), std::string(depth_test_name(o.depth_test)).c_str(),
-               o.depth_write ? "on" : "off", std::string(shading_name(o.shading)).c_str(),
-               std::string(interpolation_method_name(o.interpolation)).c_str(),
-               std::string(perspective_name(o.perspective)).c_str(), static_cast<double>(o.ambient),
+               static_cast<int>(o.cull), std::string(name_of(o.depth_test)).c_str(),
+               o.depth_write ? "on" : "off", std::string(name_of(o.shading)).c_str(),
+               std::string(name_of(o.interpolation)).c_str(),
+               std::string(name_of(o.perspective)).c_str(), static_cast<double>(o.ambient),
                static_cast<double>(o.light_direction.x), static_cast<double>(o.light_direction.y),
                static_cast<double>(o.light_direction.z),
                c.expect_invalid ? "; expected: std::invalid_argument" : "");
@@ -633,7 +630,7 @@ void print_outputs(std::span<const Output> outputs) {
                "passed");
   for (const Output& o : outputs) {
     if (o.threw) {
-      std::fprintf(stderr, "%-10s threw: %s\n", std::string(isa_name(o.isa)).c_str(),
+      std::fprintf(stderr, "%-10s threw: %s\n", std::string(name_of(o.isa)).c_str(),
                    o.error.c_str());
       continue;
     }
@@ -641,7 +638,7 @@ void print_outputs(std::span<const Output> outputs) {
     std::fprintf(stderr,
                  "%-10s %9" PRIu64 " %7" PRIu64 " %8" PRIu64 " %7" PRIu64 " %6" PRIu64 " %6" PRIu64
                  " %10" PRIu64 " %9" PRIu64 " %9" PRIu64 "\n",
-                 std::string(isa_name(o.isa)).c_str(), r.triangles, r.clipped, r.clip_triangles,
+                 std::string(name_of(o.isa)).c_str(), r.triangles, r.clipped, r.clip_triangles,
                  r.outside, r.culled, r.errors, r.rasterized, r.fragments, r.fragments_passed);
   }
 }
@@ -903,7 +900,7 @@ void check_draw(const Case& c, std::span<const Output> outputs, std::span<const 
   for (const Output& o : outputs) {
     if (o.threw != c.expect_invalid) {
       fail(c, o.threw ? "draw() threw for a valid input" : "draw() accepted an invalid input",
-           outputs, std::string(isa_name(o.isa)));
+           outputs, std::string(name_of(o.isa)));
     }
   }
   const std::uint32_t clear = clear_code(c);
@@ -915,7 +912,7 @@ void check_draw(const Case& c, std::span<const Output> outputs, std::span<const 
       for (std::size_t i = 0; i < storage; ++i) {
         if (o.target.color_tiles()[i] != clear ||
             std::bit_cast<std::uint32_t>(o.target.depth_tiles()[i]) != clear_depth) {
-          fail(c, "a rejected draw changed the framebuffer", outputs, std::string(isa_name(o.isa)));
+          fail(c, "a rejected draw changed the framebuffer", outputs, std::string(name_of(o.isa)));
         }
       }
     }
@@ -924,7 +921,7 @@ void check_draw(const Case& c, std::span<const Output> outputs, std::span<const 
   const DrawOptions& opt = c.options;
   for (const Output& o : outputs) {
     const DrawReport& r = o.report;
-    const std::string name(isa_name(o.isa));
+    const std::string name(name_of(o.isa));
     if (r.isa != o.isa) fail(c, "DrawReport names another ISA", outputs, name);
     if (!same_counts(r, ref.report)) fail(c, "DrawReport counts differ", outputs, name);
     if (r.triangles != c.triangle_count() || r.fragments_passed > r.fragments ||
@@ -957,7 +954,7 @@ void check_draw(const Case& c, std::span<const Output> outputs, std::span<const 
         }
         if (problem != nullptr) {
           fail(c, problem, outputs,
-               std::string(isa_name(o.isa)) + " " + pixel_text(x, y) + ": colour " +
+               std::string(name_of(o.isa)) + " " + pixel_text(x, y) + ": colour " +
                    hex(o.target.color_tiles()[i]) + " depth " + float_text(z) +
                    "; reference colour " + hex(ref.target.color_tiles()[i]) + " depth " +
                    float_text(ref.target.depth_tiles()[i]));
@@ -999,7 +996,7 @@ void check_colours(const Case& c, std::span<const Output> outputs, std::span<con
         stats.widest =
             std::max<std::uint64_t>(stats.widest, static_cast<std::uint64_t>(difference));
         if (difference > allowed) {
-          std::string detail = std::string(isa_name(o.isa)) + " " + pixel_text(x, y) + ": colour " +
+          std::string detail = std::string(name_of(o.isa)) + " " + pixel_text(x, y) + ": colour " +
                                hex(actual) + ", reference " + hex(expected) + " (ABGR), " +
                                std::to_string(difference) + " codes apart, " +
                                std::to_string(allowed) + " allowed; written by one of:";
@@ -1114,7 +1111,7 @@ void check_textured_colours(const Case& c, const test::TexturedPixelCheck& check
           excess = std::min(excess, test::TexturedPixelCheck::excess(w.allowed, got.data()));
         stats.closest = std::max(stats.closest, excess);
         if (excess <= 0.0) continue;
-        std::string detail = std::string(isa_name(o.isa)) + " " + pixel_text(x, y) + ": colour " +
+        std::string detail = std::string(name_of(o.isa)) + " " + pixel_text(x, y) + ": colour " +
                              hex(o.target.color_tiles()[i]) + ", reference " + hex(expected) +
                              ", untextured reference " + hex(untextured.color_tiles()[i]) +
                              " (ABGR), " + std::to_string(excess) +
@@ -1174,8 +1171,7 @@ void print_stats() {
       stats.non_finite_queries, stats.closest, stats.textured_unbounded);
   for (int f = 0; f < kFilterCount; ++f) {
     std::fprintf(stderr, "  %-20s %10" PRIu64 " pixels checked\n",
-                 std::string(texture_filter_name(static_cast<TextureFilter>(f))).c_str(),
-                 stats.per_filter[f]);
+                 std::string(name_of(static_cast<TextureFilter>(f))).c_str(), stats.per_filter[f]);
   }
 }
 

@@ -134,7 +134,7 @@ std::uint64_t popcount_of(const std::vector<TileCoverage>& tiles) {
     std::fprintf(stderr,
                  "%-10s %9" PRIu64 " %6" PRIu64 " %6" PRIu64 " %6" PRIu64 " %8zu %6" PRIu64
                  "/%-6" PRIu64 "\n",
-                 std::string(isa_name(o.isa)).c_str(), o.report.triangles, o.report.drawn,
+                 std::string(name_of(o.isa)).c_str(), o.report.triangles, o.report.drawn,
                  o.report.culled, o.report.errors, o.tiles.size(), popcount_of(o.tiles),
                  o.counted_pixels);
   }
@@ -142,7 +142,7 @@ std::uint64_t popcount_of(const std::vector<TileCoverage>& tiles) {
   for (std::size_t t = 0; t < triangles; ++t) {
     std::fprintf(stderr, "  triangle %zu:", t);
     for (const Output& o : outputs)
-      std::fprintf(stderr, " %s=%d", std::string(isa_name(o.isa)).c_str(),
+      std::fprintf(stderr, " %s=%d", std::string(name_of(o.isa)).c_str(),
                    static_cast<int>(o.statuses[t]));
     std::fprintf(stderr, "\n");
   }

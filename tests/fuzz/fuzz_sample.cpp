@@ -271,19 +271,16 @@ void print_case(const Case& c, const test::TextureExtremes& extremes) {
                "texture %s %dx%d, %s pyramid, %s texels (seed %" PRIu32
                ", float scale 2^%d), ripmaps %s, summed-area table %s; range R %.9g, largest T "
                "%.9g\n",
-               format_name(c), c.width, c.height,
-               std::string(pyramid_filter_name(c.build.filter)).c_str(),
+               format_name(c), c.width, c.height, std::string(name_of(c.build.filter)).c_str(),
                kPatternNames[static_cast<int>(c.pattern)], c.seed, c.scale_exponent,
                c.build.ripmaps ? "yes" : "no", c.build.summed_area_table ? "yes" : "no",
                extremes.range, extremes.largest);
   std::fprintf(stderr,
                "filter %s, wrap %s/%s, lod %s, lod_bias %.9g, max_anisotropy %d, "
                "supersample_taps %d (variant %" PRIu32 ")%s\n",
-               std::string(texture_filter_name(o.filter)).c_str(),
-               std::string(wrap_mode_name(o.wrap_s)).c_str(),
-               std::string(wrap_mode_name(o.wrap_t)).c_str(),
-               std::string(lod_formula_name(o.lod)).c_str(), static_cast<double>(o.lod_bias),
-               o.max_anisotropy, o.supersample_taps, c.variant,
+               std::string(name_of(o.filter)).c_str(), std::string(name_of(o.wrap_s)).c_str(),
+               std::string(name_of(o.wrap_t)).c_str(), std::string(name_of(o.lod)).c_str(),
+               static_cast<double>(o.lod_bias), o.max_anisotropy, o.supersample_taps, c.variant,
                c.expect_invalid ? "; expected: std::invalid_argument" : "");
 }
 
@@ -302,7 +299,7 @@ void print_outputs(const Case& c, std::span<const Output> outputs,
                    std::span<const Verdict> verdicts) {
   for (const Output& o : outputs) {
     if (o.threw) {
-      std::fprintf(stderr, "%-10s threw: %s\n", std::string(isa_name(o.isa)).c_str(),
+      std::fprintf(stderr, "%-10s threw: %s\n", std::string(name_of(o.isa)).c_str(),
                    o.error.c_str());
     }
   }
@@ -316,7 +313,7 @@ void print_outputs(const Case& c, std::span<const Output> outputs,
     for (const Output& o : outputs) {
       if (o.threw) continue;
       const Vec4& r = o.results[i];
-      std::fprintf(stderr, "  %-10s (%.9g, %.9g, %.9g, %.9g)", std::string(isa_name(o.isa)).c_str(),
+      std::fprintf(stderr, "  %-10s (%.9g, %.9g, %.9g, %.9g)", std::string(name_of(o.isa)).c_str(),
                    static_cast<double>(r.x), static_cast<double>(r.y), static_cast<double>(r.z),
                    static_cast<double>(r.w));
       if (i < verdicts.size())
@@ -377,8 +374,8 @@ void print_stats() {
                stats.inputs, stats.invalid, stats.results, stats.bad_positions);
   for (int f = 0; f < kFilterCount; ++f) {
     std::fprintf(stderr, "  %-20s %10" PRIu64 " results, largest distance / bound %.3g\n",
-                 std::string(texture_filter_name(static_cast<TextureFilter>(f))).c_str(),
-                 stats.per_filter[f], stats.closest[f]);
+                 std::string(name_of(static_cast<TextureFilter>(f))).c_str(), stats.per_filter[f],
+                 stats.closest[f]);
   }
 }
 
@@ -398,7 +395,7 @@ void check_exceptions(const Case& c, const test::TextureExtremes& extremes,
     if (o.threw != c.expect_invalid) {
       fail(c, extremes,
            o.threw ? "sample() threw for a valid input" : "sample() accepted an invalid input",
-           outputs, {}, std::string(isa_name(o.isa)));
+           outputs, {}, std::string(name_of(o.isa)));
     }
   }
 }
@@ -430,7 +427,7 @@ void check_results(const Case& c, const Texture& texture, const test::TextureExt
     stats.bad_positions += bad_position ? outputs.size() : 0;
     for (const Output& o : outputs) {
       const Vec4& got = o.results[i];
-      const std::string detail = std::string(isa_name(o.isa)) + ", " + where;
+      const std::string detail = std::string(name_of(o.isa)) + ", " + where;
       ++stats.results;
       ++stats.per_filter[filter];
       if (bad_position && !(got.x == 0 && got.y == 0 && got.z == 0 && got.w == 0))

@@ -51,10 +51,10 @@ int main() {
     const bool ok =
         sink.pixels == kExpected && sink.overlaps == 0 && report.drawn == 2 && report.isa == isa;
     std::printf("%-9s %llu pixels, %llu covered twice, ran on %s: %s\n",
-                std::string(edgewise::isa_name(isa)).c_str(),
+                std::string(edgewise::name_of(isa)).c_str(),
                 static_cast<unsigned long long>(sink.pixels),
                 static_cast<unsigned long long>(sink.overlaps),
-                std::string(edgewise::isa_name(report.isa)).c_str(), ok ? "ok" : "WRONG");
+                std::string(edgewise::name_of(report.isa)).c_str(), ok ? "ok" : "WRONG");
     failures += ok ? 0 : 1;
   }
   return failures == 0 ? 0 : 1;

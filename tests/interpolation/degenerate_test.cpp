@@ -150,10 +150,8 @@ TEST(InterpolationDegenerate, ReferenceFiniteAndAsDocumented) {
       const reference::Weights correct =
           reference::interpolation_weights(method, Perspective::correct, c.triangle, c.px, c.py);
       for (int i = 0; i < 3; ++i) {
-        EXPECT_TRUE(std::isfinite(screen.b[i]))
-            << c.name << " " << interpolation_method_name(method);
-        EXPECT_TRUE(std::isfinite(correct.b[i]))
-            << c.name << " " << interpolation_method_name(method);
+        EXPECT_TRUE(std::isfinite(screen.b[i])) << c.name << " " << name_of(method);
+        EXPECT_TRUE(std::isfinite(correct.b[i])) << c.name << " " << name_of(method);
         if (bad_w(c.triangle)) {
           EXPECT_EQ(correct.b[i], screen.b[i]) << c.name << ": affine";
         }
@@ -161,7 +159,7 @@ TEST(InterpolationDegenerate, ReferenceFiniteAndAsDocumented) {
       if (const auto& expected = expected_for(c.expected, method)) {
         for (int i = 0; i < 3; ++i) {
           EXPECT_NEAR(screen.b[i], expected->b[i], 0x1.0p-50)
-              << c.name << " " << interpolation_method_name(method) << " b" << i;
+              << c.name << " " << name_of(method) << " b" << i;
         }
       }
     }
@@ -185,15 +183,14 @@ TEST_P(InterpolationDegenerateFast, FiniteAndAsDocumented) {
       fast->screen_row(method, c.triangle, origin_x, origin_y, 0, 0, screen.data());
       fast->perspective_row(method, c.triangle, origin_x, origin_y, 0, 0, correct.data());
       for (std::size_t k = 0; k < 3 * lanes; ++k) {
-        ASSERT_TRUE(std::isfinite(screen[k])) << c.name << " " << interpolation_method_name(method);
-        ASSERT_TRUE(std::isfinite(correct[k]))
-            << c.name << " " << interpolation_method_name(method);
+        ASSERT_TRUE(std::isfinite(screen[k])) << c.name << " " << name_of(method);
+        ASSERT_TRUE(std::isfinite(correct[k])) << c.name << " " << name_of(method);
       }
       if (const auto& expected = expected_for(c.expected, method)) {
         // Float rounding of exactly representable results, or of 1/3: within 2^-24.
         for (int i = 0; i < 3; ++i) {
           EXPECT_NEAR(screen[i * lanes], expected->b[i], 0x1.0p-24)
-              << c.name << " " << interpolation_method_name(method) << " b" << i;
+              << c.name << " " << name_of(method) << " b" << i;
         }
       }
     }

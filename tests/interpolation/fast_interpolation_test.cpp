@@ -45,8 +45,8 @@ std::string where(const ScreenTriangle& t, InterpolationMethod method, double px
   std::snprintf(text, sizeof text,
                 "%s b%d at (%.17g, %.17g), triangle (%.17g, %.17g) (%.17g, %.17g) "
                 "(%.17g, %.17g) w %.17g %.17g %.17g",
-                std::string(interpolation_method_name(method)).c_str(), vertex, px, py, t.x[0],
-                t.y[0], t.x[1], t.y[1], t.x[2], t.y[2], t.w[0], t.w[1], t.w[2]);
+                std::string(name_of(method)).c_str(), vertex, px, py, t.x[0], t.y[0], t.x[1],
+                t.y[1], t.x[2], t.y[2], t.w[0], t.w[1], t.w[2]);
   return text;
 }
 
@@ -164,11 +164,11 @@ TEST_P(FastInterpolationTest, WithinDerivedBoundOfReference) {
       if (HasFatalFailure()) return;
     }
     std::printf("%-6s %-11s %ld pixels; worst screen-space error inside:",
-                std::string(isa_name(isa())).c_str(), std::string(source.name).c_str(),
+                std::string(name_of(isa())).c_str(), std::string(source.name).c_str(),
                 checked.pixels);
     for (InterpolationMethod method : kInterpolationMethods) {
       if (method == InterpolationMethod::nearest_vertex) continue;
-      std::printf(" %s %.2g", std::string(interpolation_method_name(method)).c_str(),
+      std::printf(" %s %.2g", std::string(name_of(method)).c_str(),
                   checked.worst_inside[static_cast<int>(method)]);
     }
     std::printf("\n");

@@ -7,15 +7,15 @@ namespace {
 
 TEST(InterpolationNames, RoundTripAndRejectUnknown) {
   for (InterpolationMethod method : kInterpolationMethods) {
-    EXPECT_EQ(parse_interpolation_method(interpolation_method_name(method)), method);
+    EXPECT_EQ(parse_name<InterpolationMethod>(name_of(method)), method);
   }
   for (Perspective perspective : {Perspective::correct, Perspective::affine}) {
-    EXPECT_EQ(parse_perspective(perspective_name(perspective)), perspective);
+    EXPECT_EQ(parse_name<Perspective>(name_of(perspective)), perspective);
   }
-  EXPECT_EQ(parse_interpolation_method("plane"), std::nullopt);
-  EXPECT_EQ(parse_interpolation_method(""), std::nullopt);
-  EXPECT_EQ(parse_perspective("perspective"), std::nullopt);
-  static_assert(parse_interpolation_method("scanline") == InterpolationMethod::scanline);
+  EXPECT_EQ(parse_name<InterpolationMethod>("plane"), std::nullopt);
+  EXPECT_EQ(parse_name<InterpolationMethod>(""), std::nullopt);
+  EXPECT_EQ(parse_name<Perspective>("perspective"), std::nullopt);
+  EXPECT_EQ(parse_name<InterpolationMethod>("scanline"), InterpolationMethod::scanline);
 }
 
 }  // namespace

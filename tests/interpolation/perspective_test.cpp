@@ -34,8 +34,7 @@ TEST(Perspective, CorrectMatchesExactWithinDerivedBound) {
             for (int i = 0; i < 3; ++i) {
               ASSERT_LE(std::abs(correct.b[i] - exact.correct.b[i]),
                         bound.b[i].error + exact.correct_error[i])
-                  << source.name << " " << interpolation_method_name(method) << " ratio "
-                  << depth_ratio << " b" << i;
+                  << source.name << " " << name_of(method) << " ratio " << depth_ratio << " b" << i;
             }
           }
         }

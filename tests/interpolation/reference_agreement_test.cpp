@@ -39,8 +39,8 @@ TEST(InterpolationReference, EquivalentMethodsAgreeWithinDerivedBound) {
           for (int i = 0; i < 3; ++i) {
             const double bound = bounds[m].b[i].error + exact.screen_error[i];
             ASSERT_LE(std::abs(weights[m].b[i] - exact.screen.b[i]), bound)
-                << source.name << " " << interpolation_method_name(method) << " b" << i << " at ("
-                << px << ", " << py << ")";
+                << source.name << " " << name_of(method) << " b" << i << " at (" << px << ", " << py
+                << ")";
             relative_bounds.push_back(bounds[m].b[i].error / (std::abs(exact.screen.b[i]) + 1.0));
           }
         }
@@ -49,9 +49,8 @@ TEST(InterpolationReference, EquivalentMethodsAgreeWithinDerivedBound) {
             for (int i = 0; i < 3; ++i) {
               const double difference = std::abs(weights[m1].b[i] - weights[m2].b[i]);
               const double bound = bounds[m1].b[i].error + bounds[m2].b[i].error;
-              ASSERT_LE(difference, bound)
-                  << source.name << " " << interpolation_method_name(kBarycentricMethods[m1])
-                  << " vs " << interpolation_method_name(kBarycentricMethods[m2]);
+              ASSERT_LE(difference, bound) << source.name << " " << name_of(kBarycentricMethods[m1])
+                                           << " vs " << name_of(kBarycentricMethods[m2]);
               worst_difference = std::max(worst_difference, difference);
               worst_bound = std::max(worst_bound, bound);
             }

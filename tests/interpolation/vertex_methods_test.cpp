@@ -47,7 +47,7 @@ TEST(VertexMethods, ExactAtVerticesOneHotNearThem) {
         if (shared) continue;
         const reference::Weights at = reference::screen_weights(method, t, t.x[i], t.y[i]);
         for (int k = 0; k < 3; ++k)
-          EXPECT_EQ(at.b[k], k == i ? 1.0 : 0.0) << interpolation_method_name(method);
+          EXPECT_EQ(at.b[k], k == i ? 1.0 : 0.0) << name_of(method);
       }
     }
     // A sample at distance d from vertex i and at least D from the others: nearest vertex picks
@@ -88,7 +88,7 @@ TEST(VertexMethods, ErrorAgainstExact) {
         ++samples;
         for (int m = 0; m < 2; ++m) {
           const reference::Weights w = reference::screen_weights(kVertexMethods[m], t, px, py);
-          expect_convex(w, std::string(interpolation_method_name(kVertexMethods[m])).c_str());
+          expect_convex(w, std::string(name_of(kVertexMethods[m])).c_str());
           const double error = w.b[0] * values[0] + w.b[1] * values[1] + w.b[2] * values[2] - truth;
           squared_sum[m] += error * error;
           worst[m] = std::max(worst[m], std::abs(error));
@@ -98,8 +98,7 @@ TEST(VertexMethods, ErrorAgainstExact) {
     ASSERT_GT(samples, 0);
     for (int m = 0; m < 2; ++m) {
       std::printf("%-11s %-16s attribute in [0,1]: RMSE %.4f, worst %.4f (%ld samples)\n",
-                  std::string(source.name).c_str(),
-                  std::string(interpolation_method_name(kVertexMethods[m])).c_str(),
+                  std::string(source.name).c_str(), std::string(name_of(kVertexMethods[m])).c_str(),
                   std::sqrt(squared_sum[m] / static_cast<double>(samples)), worst[m], samples);
     }
   }

@@ -68,8 +68,8 @@ TEST_P(RenderApi, DepthCompareFunctionsOnTwoQuads) {
     for (int y = 0; y < 8; ++y) {
       for (int x = 0; x < 8; ++x) {
         EXPECT_EQ(drawn.color(x, y), c.color)
-            << depth_test_name(c.test) << " write " << c.write << " at " << x << "," << y;
-        EXPECT_EQ(drawn.depth(x, y), c.depth) << depth_test_name(c.test);
+            << name_of(c.test) << " write " << c.write << " at " << x << "," << y;
+        EXPECT_EQ(drawn.depth(x, y), c.depth) << name_of(c.test);
       }
     }
   }

@@ -34,7 +34,7 @@ TEST_P(Render, SceneDepthAndCountsEqualTheReference) {
       options.depth_write = write;
       const Rendered expected = render(Isa::reference, scene, options, width, height);
       const Rendered actual = render(isa(), scene, options, width, height);
-      const std::string where = std::string(depth_test_name(test)) + (write ? "" : " no write");
+      const std::string where = std::string(name_of(test)) + (write ? "" : " no write");
       EXPECT_EQ(actual.report.fragments, expected.report.fragments) << where;
       EXPECT_EQ(actual.report.fragments_passed, expected.report.fragments_passed) << where;
       EXPECT_EQ(actual.report.rasterized, expected.report.rasterized) << where;
@@ -91,8 +91,7 @@ TEST_P(Render, ColoursWithinTheDerivedBound) {
                 const int difference = std::abs(actual.rgba[4 * p + k] - expected.rgba[4 * p + k]);
                 ASSERT_LE(difference, allowed)
                     << "triangle " << t << " pixel " << x << "," << y << " channel " << k << " "
-                    << interpolation_method_name(method) << " " << perspective_name(perspective)
-                    << " " << shading_name(shading);
+                    << name_of(method) << " " << name_of(perspective) << " " << name_of(shading);
               }
               ++pixels;
             }

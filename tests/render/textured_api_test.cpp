@@ -109,8 +109,7 @@ TEST_P(TexturedApi, OneTexelPerPixelShowsEachTexel) {
       draw(target, quad.mesh(), options);
       std::vector<std::uint8_t> rgba(texels.size());
       target.read_rgba8(rgba);
-      ASSERT_EQ(rgba, texels) << texture_filter_name(filter) << " "
-                              << texture_derivatives_name(derivatives);
+      ASSERT_EQ(rgba, texels) << name_of(filter) << " " << name_of(derivatives);
     }
   }
 }

@@ -47,10 +47,9 @@ struct Case {
 };
 
 std::string describe(const Case& c) {
-  return std::string(texture_filter_name(c.filter)) + " " +
-         std::string(texture_derivatives_name(c.derivatives)) + " " +
-         std::string(perspective_name(c.perspective)) + " " + std::string(shading_name(c.shading)) +
-         " " + std::string(interpolation_method_name(c.method));
+  return std::string(name_of(c.filter)) + " " + std::string(name_of(c.derivatives)) + " " +
+         std::string(name_of(c.perspective)) + " " + std::string(name_of(c.shading)) + " " +
+         std::string(name_of(c.method));
 }
 
 // The colour bound for a pixel of `one` (tests/render/colour_bounds.hpp): flat shading is the

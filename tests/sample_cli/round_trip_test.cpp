@@ -75,9 +75,8 @@ std::vector<Vec4> library_sample(const Texture& texture, const SamplerOptions& o
 std::vector<std::string> tool_args(const std::string& texture, TextureFilter filter,
                                    const std::string& queries, const std::string& out,
                                    std::vector<std::string> extra = {}) {
-  std::vector<std::string> args = {
-      "--texture", texture, "--filter", std::string(texture_filter_name(filter)),
-      "--queries", queries, "--out",    out};
+  std::vector<std::string> args = {"--texture", texture, "--filter", std::string(name_of(filter)),
+                                   "--queries", queries, "--out",    out};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
@@ -108,10 +107,10 @@ TEST_P(SampleToolRoundTrip, EveryFilterMatchesTheLibraryBitForBit) {
   write_queries(f.queries, queries);
   const std::vector<std::string> isa_args =
       isa() == Isa::reference ? std::vector<std::string>{"--reference"}
-                              : std::vector<std::string>{"--isa", std::string(isa_name(isa()))};
+                              : std::vector<std::string>{"--isa", std::string(name_of(isa()))};
 
   for (TextureFilter filter : kEveryFilter) {
-    SCOPED_TRACE(std::string(texture_filter_name(filter)));
+    SCOPED_TRACE(std::string(name_of(filter)));
     const ToolRun run =
         run_sample_tool(tool_args(f.image, filter, f.queries, f.out, isa_args), f.scratch);
     ASSERT_EQ(run.status, 0) << run.summary();
@@ -125,7 +124,7 @@ TEST_P(SampleToolRoundTrip, EveryFilterMatchesTheLibraryBitForBit) {
     EXPECT_TRUE(contains(run.out, std::to_string(kQueryCount) + " queries")) << run.out;
     EXPECT_TRUE(contains(run.out, "37x23, 4 channels uint8 -> rgba8 linear, 6 mip levels"))
         << run.out;
-    EXPECT_TRUE(contains(run.out, "ISA " + std::string(isa_name(isa())))) << run.out;
+    EXPECT_TRUE(contains(run.out, "ISA " + std::string(name_of(isa())))) << run.out;
     EXPECT_EQ(contains(run.out, "ripmaps"), filter == TextureFilter::ripmap) << run.out;
     EXPECT_EQ(contains(run.out, "summed-area table"), filter == TextureFilter::summed_area)
         << run.out;
@@ -237,7 +236,7 @@ TEST(SampleTool, FloatExrMatchesTheLibrary) {
   write_queries(f.queries, queries);
   for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::trilinear,
                                TextureFilter::summed_area, TextureFilter::ewa}) {
-    SCOPED_TRACE(std::string(texture_filter_name(filter)));
+    SCOPED_TRACE(std::string(name_of(filter)));
     const ToolRun run = run_sample_tool(tool_args(f.image, filter, f.queries, f.out), f.scratch);
     ASSERT_EQ(run.status, 0) << run.summary();
     EXPECT_TRUE(contains(run.out, "29x17, 4 channels float -> rgba32f linear")) << run.out;

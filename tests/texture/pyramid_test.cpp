@@ -150,8 +150,8 @@ TEST(Pyramid, ConstantTexturesStayConstant) {
             const std::vector<double> values = level_values(texture, level);
             for (std::size_t i = 0; i < values.size(); ++i) {
               ASSERT_EQ(values[i], expected[i % 4])
-                  << pyramid_filter_name(filter) << " " << w << "x" << h << " level " << level.width
-                  << "x" << level.height;
+                  << name_of(filter) << " " << w << "x" << h << " level " << level.width << "x"
+                  << level.height;
             }
           }
         }
@@ -402,7 +402,7 @@ TEST(Pyramid, SrgbTexturesAreFilteredInLinear) {
           reinterpret_cast<const std::uint8_t*>(texture.texels(texture.mip_levels()[1]));
       for (int ch = 0; ch < 3; ++ch) {
         if (encoding == ColorEncoding::srgb) {
-          EXPECT_EQ(texel[ch], 188) << pyramid_filter_name(filter);
+          EXPECT_EQ(texel[ch], 188) << name_of(filter);
         } else if (filter == PyramidFilter::box) {
           EXPECT_EQ(texel[ch], 128);
         } else {
@@ -454,7 +454,7 @@ TEST(Ripmap, DiagonalIsTheMipChain) {
         ASSERT_EQ(rip.width, mip.width);
         ASSERT_EQ(rip.height, mip.height);
         EXPECT_EQ(level_values(texture, rip), level_values(texture, mip))
-            << pyramid_filter_name(filter) << " " << w << "x" << h << " level " << i;
+            << name_of(filter) << " " << w << "x" << h << " level " << i;
       }
     }
   }

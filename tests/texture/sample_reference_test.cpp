@@ -139,7 +139,7 @@ std::string describe(const TextureQuery& q) {
 }
 
 std::string describe(TextureFilter filter, WrapMode wrap) {
-  return std::string(texture_filter_name(filter)) + "/" + std::string(wrap_mode_name(wrap));
+  return std::string(name_of(filter)) + "/" + std::string(name_of(wrap));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -174,7 +174,7 @@ TEST(SampleReference, WrapIndexHandCases) {
 
   for (WrapMode wrap : kWraps) {
     for (std::int64_t i : {kMin, std::int64_t{-7}, std::int64_t{0}, std::int64_t{9}, kMax}) {
-      EXPECT_EQ(wrap_index(i, 1, wrap), 0) << wrap_mode_name(wrap);
+      EXPECT_EQ(wrap_index(i, 1, wrap), 0) << name_of(wrap);
     }
   }
 }
@@ -235,8 +235,8 @@ TEST(SampleReference, NearestPicksTheTexelAtBoundaries) {
     return reference::nearest(texture, level0(texture), wrap, wrap, s, t)[0];
   };
   for (WrapMode wrap : kWraps) {
-    EXPECT_EQ(red(wrap, 0.25f, 0.25f), 1) << wrap_mode_name(wrap);  // s w = 1: texel 1
-    EXPECT_EQ(red(wrap, std::nextafter(0.25f, 0.0f), 0.25f), 0);    // just below: texel 0
+    EXPECT_EQ(red(wrap, 0.25f, 0.25f), 1) << name_of(wrap);       // s w = 1: texel 1
+    EXPECT_EQ(red(wrap, std::nextafter(0.25f, 0.0f), 0.25f), 0);  // just below: texel 0
     EXPECT_EQ(red(wrap, 0.5f, 0.25f), 2);
     EXPECT_EQ(red(wrap, 0.0f, 0.25f), 0);
     EXPECT_EQ(red(wrap, 0.25f, 0.5f), 11);  // t h = 1: row 1
@@ -266,7 +266,7 @@ TEST(SampleReference, BilinearIsExactAtTexelCentres) {
       for (int a = 0; a < 4; ++a) {
         const double s = (a + 0.5) / 4, t = (b + 0.5) / 4;
         expect_rgba_eq(reference::bilinear(texture, level0(texture), wrap, wrap, s, t),
-                       level0_texel(texture, a, b), std::string(wrap_mode_name(wrap)));
+                       level0_texel(texture, a, b), std::string(name_of(wrap)));
       }
     }
   }
@@ -283,7 +283,7 @@ TEST(SampleReference, BilinearHandValues) {
   };
   // Texels 1 2 4 8. s = 0.5: between texels 1 and 2.
   for (WrapMode wrap : kWraps)
-    EXPECT_EQ(red(wrap, 0.5), 3.0) << wrap_mode_name(wrap);
+    EXPECT_EQ(red(wrap, 0.5), 3.0) << name_of(wrap);
   // The seams. s = 0: indices -1, 0; s = 1: 3, 4; s = -0.25: -2, -1; s = 1.25: 4, 5.
   EXPECT_EQ(red(WrapMode::repeat, 0.0), 4.5);  // texels 3 and 0
   EXPECT_EQ(red(WrapMode::clamp_to_edge, 0.0), 1.0);
@@ -623,7 +623,7 @@ TEST(SampleReference, NonFiniteCoordinatesGiveZero) {
             TextureQuery{bad, bad, kNaNF, 0, 0, kInfF}}) {
         expect_rgba_eq(
             reference::sample(texture, options_for(filter, WrapMode::repeat, WrapMode::mirror), q),
-            {0, 0, 0, 0}, describe(q) + " " + std::string(texture_filter_name(filter)));
+            {0, 0, 0, 0}, describe(q) + " " + std::string(name_of(filter)));
       }
     }
   }
@@ -820,8 +820,8 @@ TEST(SampleReference, ConstantTextureGivesTheConstant) {
             const Rgba got = reference::sample(c.texture, options, q);
             for (int ch = 0; ch < 4; ++ch) {
               EXPECT_NEAR(got[ch], expected[ch], tolerance * std::abs(expected[ch]))
-                  << c.name << " " << describe(filter, wrap_s) << "/" << wrap_mode_name(wrap_t)
-                  << " " << describe(q) << " channel " << ch;
+                  << c.name << " " << describe(filter, wrap_s) << "/" << name_of(wrap_t) << " "
+                  << describe(q) << " channel " << ch;
             }
           }
         }
@@ -1001,8 +1001,7 @@ TEST(SampleReference, ExtendedPrefixSumIsTheSignedIntegralFromTheOrigin) {
         expect_rgba_near(reference::extended_prefix_sum(table, wrap_s, wrap_t, x, y), expected,
                          summed_area_tolerance(texture, {13, 13}) * 4 * 13 * 13,
                          std::to_string(x) + ", " + std::to_string(y) + " " +
-                             std::string(wrap_mode_name(wrap_s)) + "/" +
-                             std::string(wrap_mode_name(wrap_t)));
+                             std::string(name_of(wrap_s)) + "/" + std::string(name_of(wrap_t)));
       }
     }
   }

@@ -168,13 +168,12 @@ TEST_P(SampleDifferential, EveryFilterWithinItsBoundOfTheReference) {
           const double best = test::distance_to_reference(t.texture, options, q, fast[i]);
           ASSERT_TRUE(std::isfinite(got[0]) && std::isfinite(got[1]) && std::isfinite(got[2]) &&
                       std::isfinite(got[3]))
-              << t.name << " " << texture_filter_name(c.filter) << " query " << i << ": s " << q.s
-              << " t " << q.t << " d " << q.dsdx << " " << q.dtdx << " " << q.dsdy << " " << q.dtdy;
+              << t.name << " " << name_of(c.filter) << " query " << i << ": s " << q.s << " t "
+              << q.t << " d " << q.dsdx << " " << q.dtdx << " " << q.dsdy << " " << q.dtdy;
           ASSERT_LE(best, allowed)
-              << t.name << " " << texture_filter_name(c.filter) << " wrap "
-              << wrap_mode_name(options.wrap_s) << "/" << wrap_mode_name(options.wrap_t)
-              << " query " << i << ": s " << q.s << " t " << q.t << " d " << q.dsdx << " " << q.dtdx
-              << " " << q.dsdy << " " << q.dtdy;
+              << t.name << " " << name_of(c.filter) << " wrap " << name_of(options.wrap_s) << "/"
+              << name_of(options.wrap_t) << " query " << i << ": s " << q.s << " t " << q.t << " d "
+              << q.dsdx << " " << q.dtdx << " " << q.dsdy << " " << q.dtdy;
           ++compared;
         }
       }
@@ -200,7 +199,7 @@ TEST(SampleBound, EightBitResultsWithinOneLevel) {
     options.max_anisotropy = c.max_anisotropy;
     const TextureQuery q{0.9f, -0.9f, 0.5f, 0.5f, -0.5f, 0.5f};
     EXPECT_LE(test::sample_bound(t.texture, t.extremes, options, q), 1.0 / 255.0)
-        << texture_filter_name(c.filter);
+        << name_of(c.filter);
   }
 }
 
@@ -231,7 +230,7 @@ TEST_P(SampleDifferential, BadQueriesGiveTheirDefinedResults) {
       ASSERT_TRUE(std::isfinite(out[i].x));
       // The coarsest texel is stored: float32 decoding is within 2^-24 of it.
       if (derivatives) {
-        EXPECT_NEAR(out[i].x, average[0], 0x1p-23) << texture_filter_name(c.filter);
+        EXPECT_NEAR(out[i].x, average[0], 0x1p-23) << name_of(c.filter);
       }
     }
   }
@@ -266,13 +265,13 @@ TEST(SampleArguments, RejectsMismatchedSpansAndOptionsOutOfRange) {
 TEST(SampleNames, RoundTrip) {
   for (int f = 0; f <= static_cast<int>(TextureFilter::ewa); ++f) {
     const auto filter = static_cast<TextureFilter>(f);
-    EXPECT_EQ(parse_texture_filter(texture_filter_name(filter)), filter);
+    EXPECT_EQ(parse_name<TextureFilter>(name_of(filter)), filter);
   }
   for (WrapMode wrap : {WrapMode::repeat, WrapMode::clamp_to_edge, WrapMode::mirror})
-    EXPECT_EQ(parse_wrap_mode(wrap_mode_name(wrap)), wrap);
+    EXPECT_EQ(parse_name<WrapMode>(name_of(wrap)), wrap);
   for (LodFormula lod : {LodFormula::exact, LodFormula::max_axis})
-    EXPECT_EQ(parse_lod_formula(lod_formula_name(lod)), lod);
-  EXPECT_FALSE(parse_texture_filter("bogus"));
+    EXPECT_EQ(parse_name<LodFormula>(name_of(lod)), lod);
+  EXPECT_FALSE(parse_name<TextureFilter>("bogus"));
 }
 
 INSTANTIATE_TEST_SUITE_P(Isas, SampleDifferential, ::testing::ValuesIn(test::fast_isas()),

@@ -189,11 +189,11 @@ TEST(Srgb, TransferFunctionsAndTable) {
 
 TEST(Texture, PyramidFilterNames) {
   for (PyramidFilter filter : {PyramidFilter::box, PyramidFilter::lanczos3}) {
-    EXPECT_EQ(parse_pyramid_filter(pyramid_filter_name(filter)), filter);
+    EXPECT_EQ(parse_name<PyramidFilter>(name_of(filter)), filter);
   }
-  EXPECT_EQ(pyramid_filter_name(PyramidFilter::lanczos3), "lanczos3");
-  EXPECT_FALSE(parse_pyramid_filter("Box").has_value());
-  EXPECT_FALSE(parse_pyramid_filter("").has_value());
+  EXPECT_EQ(name_of(PyramidFilter::lanczos3), "lanczos3");
+  EXPECT_FALSE(parse_name<PyramidFilter>("Box").has_value());
+  EXPECT_FALSE(parse_name<PyramidFilter>("").has_value());
 }
 
 }  // namespace

@@ -38,9 +38,9 @@ TEST(FilterMethods, EveryFilterWithUniqueNames) {
       if (method.options.filter != filter) continue;
       ++count;
       // Names start with the filter's own name, so a reader of the scores can tell it.
-      EXPECT_EQ(method.name.rfind(std::string(texture_filter_name(filter)), 0), 0u) << method.name;
+      EXPECT_EQ(method.name.rfind(std::string(name_of(filter)), 0), 0u) << method.name;
     }
-    EXPECT_EQ(count, filter == TextureFilter::supersample ? 2 : 1) << texture_filter_name(filter);
+    EXPECT_EQ(count, filter == TextureFilter::supersample ? 2 : 1) << name_of(filter);
   }
 }
 
@@ -138,9 +138,9 @@ TEST(FilterMethods, ReadsLevelOfDetailAgreesWithTheSampler) {
       return a.x != b.x || a.y != b.y || a.z != b.z || a.w != b.w;
     };
     EXPECT_EQ(differs(result(biased), plain), reads_lod_bias(options.filter))
-        << texture_filter_name(options.filter);
+        << name_of(options.filter);
     EXPECT_EQ(differs(result(max_axis), plain), reads_lod_formula(options.filter))
-        << texture_filter_name(options.filter);
+        << name_of(options.filter);
   }
 }
 

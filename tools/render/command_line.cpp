@@ -136,7 +136,7 @@ std::string texture_filter_list() {
   std::string names;
   for (std::size_t i = 0; i < std::size(kEveryTextureFilter); ++i) {
     if (i > 0) names += i + 1 == std::size(kEveryTextureFilter) ? " or " : ", ";
-    names += texture_filter_name(kEveryTextureFilter[i]);
+    names += name_of(kEveryTextureFilter[i]);
   }
   return names;
 }
@@ -146,14 +146,14 @@ template <class Value>
 bool parse_texture_option(std::string_view arg, Value value, TextureSettings& texture) {
   SamplerOptions& sampler = texture.sampler;
   if (arg == "--filter") {
-    sampler.filter = Values::named(arg, value(), parse_texture_filter, texture_filter_list());
+    sampler.filter = Values::named(arg, value(), parse_name<TextureFilter>, texture_filter_list());
   } else if (arg == "--each-filter") {
     texture.each_filter = true;
   } else if (arg == "--wrap") {
     sampler.wrap_s = sampler.wrap_t =
-        Values::named(arg, value(), parse_wrap_mode, "repeat, clamp or mirror");
+        Values::named(arg, value(), parse_name<WrapMode>, "repeat, clamp or mirror");
   } else if (arg == "--lod") {
-    sampler.lod = Values::named(arg, value(), parse_lod_formula, "exact or max_axis");
+    sampler.lod = Values::named(arg, value(), parse_name<LodFormula>, "exact or max_axis");
   } else if (arg == "--lod-bias") {
     sampler.lod_bias = Values::number(arg, value());
   } else if (arg == "--max-aniso") {
@@ -161,12 +161,12 @@ bool parse_texture_option(std::string_view arg, Value value, TextureSettings& te
   } else if (arg == "--taps") {
     sampler.supersample_taps = Values::integer_in(arg, value(), 1, kMaxSupersampleTaps);
   } else if (arg == "--pyramid") {
-    texture.pyramid = Values::named(arg, value(), parse_pyramid_filter, "box or lanczos3");
+    texture.pyramid = Values::named(arg, value(), parse_name<PyramidFilter>, "box or lanczos3");
   } else if (arg == "--srgb") {
     texture.srgb = true;
   } else if (arg == "--derivatives") {
     texture.derivatives =
-        Values::named(arg, value(), parse_texture_derivatives, "quad or analytic");
+        Values::named(arg, value(), parse_name<TextureDerivatives>, "quad or analytic");
   } else {
     return false;
   }
@@ -241,17 +241,17 @@ RenderSettings parse_command_line(std::span<char* const> args) {
       parse_size(value(), settings);
     } else if (arg == "--method") {
       settings.draw.interpolation =
-          Values::named(arg, value(), parse_interpolation_method,
+          Values::named(arg, value(), parse_name<InterpolationMethod>,
                         "nearest_vertex, inverse_distance, subtriangle_areas, edge_functions, "
                         "scanline or plane_equations");
     } else if (arg == "--perspective") {
       settings.draw.perspective =
-          Values::named(arg, value(), parse_perspective, "correct or affine");
+          Values::named(arg, value(), parse_name<Perspective>, "correct or affine");
     } else if (arg == "--shading") {
       settings.draw.shading =
-          Values::named(arg, value(), parse_shading, "flat, gouraud or diffuse");
+          Values::named(arg, value(), parse_name<Shading>, "flat, gouraud or diffuse");
     } else if (arg == "--depth-test") {
-      settings.draw.depth_test = Values::named(arg, value(), parse_depth_test,
+      settings.draw.depth_test = Values::named(arg, value(), parse_name<DepthTest>,
                                                "less, less_equal, greater, always or never");
     } else if (arg == "--no-depth-write") {
       settings.draw.depth_write = false;

@@ -49,7 +49,7 @@ std::string describe_texture(const RenderTexture& texture, const TextureSettings
   out << texture.origin << ", " << t.width() << "x" << t.height() << " "
       << (t.format() == TexelFormat::rgba8 ? "rgba8" : "rgba32f")
       << (settings.srgb ? " sRGB" : " linear") << ", " << t.mip_levels().size() << " mip levels ("
-      << pyramid_filter_name(settings.pyramid) << ")";
+      << name_of(settings.pyramid) << ")";
   if (!t.ripmap_levels().empty()) {
     out << ", ripmaps " << t.ripmap_columns() << "x"
         << t.ripmap_levels().size() / static_cast<std::size_t>(t.ripmap_columns());
@@ -59,12 +59,11 @@ std::string describe_texture(const RenderTexture& texture, const TextureSettings
   if (settings.each_filter) {
     out << "each of " << std::size(kEveryTextureFilter);
   } else {
-    out << texture_filter_name(sampler.filter);
+    out << name_of(sampler.filter);
   }
-  out << ", derivatives " << texture_derivatives_name(settings.derivatives) << ", wrap "
-      << wrap_mode_name(sampler.wrap_s) << ", lod " << lod_formula_name(sampler.lod) << ", bias "
-      << sampler.lod_bias << ", max aniso " << sampler.max_anisotropy << ", taps "
-      << sampler.supersample_taps;
+  out << ", derivatives " << name_of(settings.derivatives) << ", wrap " << name_of(sampler.wrap_s)
+      << ", lod " << name_of(sampler.lod) << ", bias " << sampler.lod_bias << ", max aniso "
+      << sampler.max_anisotropy << ", taps " << sampler.supersample_taps;
   return out.str();
 }
 

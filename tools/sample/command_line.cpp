@@ -94,16 +94,16 @@ SampleSettings parse_command_line(std::span<char* const> args) {
     } else if (arg == "--out") {
       settings.output_path = std::string(value());
     } else if (arg == "--filter") {
-      sampler.filter = Values::named(arg, value(), parse_texture_filter, kFilterNames);
+      sampler.filter = Values::named(arg, value(), parse_name<TextureFilter>, kFilterNames);
       filter_given = true;
     } else if (arg == "--wrap") {
-      wrap = Values::named(arg, value(), parse_wrap_mode, kWrapNames);
+      wrap = Values::named(arg, value(), parse_name<WrapMode>, kWrapNames);
     } else if (arg == "--wrap-s") {
-      wrap_s = Values::named(arg, value(), parse_wrap_mode, kWrapNames);
+      wrap_s = Values::named(arg, value(), parse_name<WrapMode>, kWrapNames);
     } else if (arg == "--wrap-t") {
-      wrap_t = Values::named(arg, value(), parse_wrap_mode, kWrapNames);
+      wrap_t = Values::named(arg, value(), parse_name<WrapMode>, kWrapNames);
     } else if (arg == "--lod") {
-      sampler.lod = Values::named(arg, value(), parse_lod_formula, "exact or max_axis");
+      sampler.lod = Values::named(arg, value(), parse_name<LodFormula>, "exact or max_axis");
     } else if (arg == "--lod-bias") {
       sampler.lod_bias = Values::number(arg, value());
     } else if (arg == "--max-aniso") {
@@ -111,7 +111,7 @@ SampleSettings parse_command_line(std::span<char* const> args) {
     } else if (arg == "--taps") {
       sampler.supersample_taps = Values::integer_in(arg, value(), 1, edgewise::kMaxSupersampleTaps);
     } else if (arg == "--pyramid") {
-      settings.pyramid = Values::named(arg, value(), parse_pyramid_filter, "box or lanczos3");
+      settings.pyramid = Values::named(arg, value(), parse_name<PyramidFilter>, "box or lanczos3");
     } else if (arg == "--srgb") {
       settings.srgb = true;
     } else if (arg == "--isa") {

@@ -99,7 +99,7 @@ QualitySettings parse_command_line(std::span<char* const> args) {
   QualitySettings settings;
   const auto add_isa = [&settings](Isa isa) {
     if (std::find(settings.isas.begin(), settings.isas.end(), isa) != settings.isas.end()) {
-      throw UsageError("ISA " + quoted(isa_name(isa)) + " given twice");
+      throw UsageError("ISA " + quoted(name_of(isa)) + " given twice");
     }
     settings.isas.push_back(isa);
   };
@@ -133,23 +133,24 @@ QualitySettings parse_command_line(std::span<char* const> args) {
       }
     } else if (arg == "--pyramid") {
       const std::string_view text = value();
-      const std::optional<PyramidFilter> pyramid = parse_pyramid_filter(text);
+      const std::optional<PyramidFilter> pyramid = parse_name<PyramidFilter>(text);
       if (!pyramid) {
         throw UsageError("unknown --pyramid value " + quoted(text) + "; expected box or lanczos3");
       }
       settings.pyramid = *pyramid;
     } else if (arg == "--filter") {
-      const TextureFilter filter = Values::named(arg, value(), parse_texture_filter,
+      const TextureFilter filter = Values::named(arg, value(), parse_name<TextureFilter>,
                                                  "a filter name (edgewise-sample --help)");
       std::vector<TextureFilter>& filters = settings.methods.filters;
       if (std::find(filters.begin(), filters.end(), filter) != filters.end()) {
-        throw UsageError("filter " + quoted(texture_filter_name(filter)) + " given twice");
+        throw UsageError("filter " + quoted(name_of(filter)) + " given twice");
       }
       filters.push_back(filter);
     } else if (arg == "--max-aniso") {
       settings.methods.max_anisotropy = Values::integer_in(arg, value(), 1, kMaxAnisotropyLimit);
     } else if (arg == "--lod") {
-      settings.methods.lod = Values::named(arg, value(), parse_lod_formula, "exact or max_axis");
+      settings.methods.lod =
+          Values::named(arg, value(), parse_name<LodFormula>, "exact or max_axis");
     } else if (arg == "--lod-bias") {
       settings.methods.lod_bias = Values::number(arg, value());
     } else if (arg == "--isa") {

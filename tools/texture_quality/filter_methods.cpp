@@ -38,7 +38,7 @@ std::string level_of_detail_suffix(const SamplerOptions& options) {
   std::string suffix;
   if (reads_lod_formula(options.filter) && options.lod != LodFormula::exact) {
     suffix += '_';
-    suffix += lod_formula_name(options.lod);
+    suffix += name_of(options.lod);
   }
   if (reads_lod_bias(options.filter) && options.lod_bias != 0.0f) {
     suffix += "_bias";
@@ -65,7 +65,7 @@ std::vector<FilterMethod> filter_methods(const MethodSettings& settings) {
     method.options.max_anisotropy = settings.max_anisotropy;
     method.options.lod = settings.lod;
     method.options.lod_bias = settings.lod_bias;
-    const std::string_view name = texture_filter_name(method.options.filter);
+    const std::string_view name = name_of(method.options.filter);
     switch (method.options.filter) {
       case TextureFilter::supersample:
         method.name = grid_name(method.options.supersample_taps);

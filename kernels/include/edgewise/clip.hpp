@@ -23,6 +23,7 @@
 
 #include "edgewise/camera.hpp"
 #include "edgewise/vector.hpp"
+#include "edgewise/names.hpp"
 
 namespace edgewise {
 
@@ -94,5 +95,10 @@ struct ClipClass {
   bool checked = false;
 };
 ClipClass classify_clip_vertex(const Vec4& p, const GuardBandPlanes& planes);
+
+// Names of the values (names.hpp).
+std::string_view name_of(ClipStatus value);
+template <>
+std::span<const ClipStatus> values_of<ClipStatus>();
 
 }  // namespace edgewise

@@ -12,6 +12,8 @@
 #include <optional>
 #include <string_view>
 
+#include "edgewise/names.hpp"
+
 namespace edgewise {
 
 enum class InterpolationMethod : std::uint8_t {
@@ -52,46 +54,12 @@ struct ScreenTriangle {
   double w[3];
 };
 
-constexpr std::string_view interpolation_method_name(InterpolationMethod method) {
-  switch (method) {
-    case InterpolationMethod::nearest_vertex:
-      return "nearest_vertex";
-    case InterpolationMethod::inverse_distance:
-      return "inverse_distance";
-    case InterpolationMethod::subtriangle_areas:
-      return "subtriangle_areas";
-    case InterpolationMethod::edge_functions:
-      return "edge_functions";
-    case InterpolationMethod::scanline:
-      return "scanline";
-    case InterpolationMethod::plane_equations:
-      return "plane_equations";
-  }
-  return "unknown";
-}
-
-constexpr std::optional<InterpolationMethod> parse_interpolation_method(std::string_view name) {
-  for (InterpolationMethod method : kInterpolationMethods) {
-    if (interpolation_method_name(method) == name) return method;
-  }
-  return std::nullopt;
-}
-
-constexpr std::string_view perspective_name(Perspective perspective) {
-  switch (perspective) {
-    case Perspective::correct:
-      return "correct";
-    case Perspective::affine:
-      return "affine";
-  }
-  return "unknown";
-}
-
-constexpr std::optional<Perspective> parse_perspective(std::string_view name) {
-  for (Perspective perspective : {Perspective::correct, Perspective::affine}) {
-    if (perspective_name(perspective) == name) return perspective;
-  }
-  return std::nullopt;
-}
+// Names of the values (names.hpp).
+std::string_view name_of(InterpolationMethod value);
+template <>
+std::span<const InterpolationMethod> values_of<InterpolationMethod>();
+std::string_view name_of(Perspective value);
+template <>
+std::span<const Perspective> values_of<Perspective>();
 
 }  // namespace edgewise

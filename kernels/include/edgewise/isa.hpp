@@ -16,12 +16,11 @@
 #include <string_view>
 #include <vector>
 
+#include "edgewise/names.hpp"
+
 namespace edgewise {
 
 enum class Isa : int { reference, sse2, sse4_1, avx2, neon };
-
-std::string_view isa_name(Isa isa);
-std::optional<Isa> parse_isa(std::string_view name);
 
 // ISAs built into this library, worst first (reference first).
 std::span<const Isa> compiled_isas();
@@ -56,5 +55,10 @@ class ScopedIsa {
  private:
   std::optional<Isa> previous_;
 };
+
+// Names of the values (names.hpp).
+std::string_view name_of(Isa value);
+template <>
+std::span<const Isa> values_of<Isa>();
 
 }  // namespace edgewise

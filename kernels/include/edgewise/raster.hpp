@@ -16,6 +16,7 @@
 
 #include "edgewise/isa.hpp"
 #include "edgewise/vector.hpp"
+#include "edgewise/names.hpp"
 
 namespace edgewise {
 
@@ -102,5 +103,13 @@ CoverageCount count_coverage(std::span<const Vec2> vertices, std::span<const std
 // The target (and scissor) as the rectangle that rasterization is clipped to.
 // Throws std::invalid_argument for sizes outside 0 .. kMaxTargetSize or an inverted scissor.
 PixelRect clip_rect(const RasterTarget& target);
+
+// Names of the values (names.hpp).
+std::string_view name_of(CullMode value);
+template <>
+std::span<const CullMode> values_of<CullMode>();
+std::string_view name_of(TriangleStatus value);
+template <>
+std::span<const TriangleStatus> values_of<TriangleStatus>();
 
 }  // namespace edgewise

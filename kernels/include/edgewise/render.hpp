@@ -34,6 +34,7 @@
 #include "edgewise/sampler.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
+#include "edgewise/names.hpp"
 
 namespace edgewise {
 
@@ -47,11 +48,6 @@ enum class Shading : std::uint8_t {
             // interpolated normal renormalized per pixel
 };
 
-std::string_view depth_test_name(DepthTest test);
-std::optional<DepthTest> parse_depth_test(std::string_view name);
-std::string_view shading_name(Shading shading);
-std::optional<Shading> parse_shading(std::string_view name);
-
 // Where the sampler's screen derivatives (dsdx, dtdx, dsdy, dtdy) come from.
 enum class TextureDerivatives : std::uint8_t {
   // Differences within 2x2 pixel quads, as GPUs take them: dsdx at (x, y) is
@@ -63,9 +59,6 @@ enum class TextureDerivatives : std::uint8_t {
   // s/w, t/w and q = 1/w: ds/dx = (d(s/w)/dx - s dq/dx) / q, and likewise for t and y.
   analytic,
 };
-
-std::string_view texture_derivatives_name(TextureDerivatives derivatives);
-std::optional<TextureDerivatives> parse_texture_derivatives(std::string_view name);
 
 struct DrawTexture {
   const Texture* texture = nullptr;  // read during draw() only
@@ -121,5 +114,16 @@ struct DrawReport {
 // options sample() refuses, an inverted scissor or an unsupported ISA. Bad geometry is counted
 // in the report, never drawn. Non-finite uvs give the sampler's defined results (sampler.hpp).
 DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
+
+// Names of the values (names.hpp).
+std::string_view name_of(DepthTest value);
+template <>
+std::span<const DepthTest> values_of<DepthTest>();
+std::string_view name_of(Shading value);
+template <>
+std::span<const Shading> values_of<Shading>();
+std::string_view name_of(TextureDerivatives value);
+template <>
+std::span<const TextureDerivatives> values_of<TextureDerivatives>();
 
 }  // namespace edgewise

@@ -54,6 +54,7 @@
 #include "edgewise/isa.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
+#include "edgewise/names.hpp"
 
 namespace edgewise {
 
@@ -107,11 +108,15 @@ void sample(const Texture& texture, const SamplerOptions& options,
             std::span<const TextureQuery> queries, std::span<Vec4> out,
             std::optional<Isa> isa = std::nullopt);
 
-std::string_view texture_filter_name(TextureFilter filter);
-std::optional<TextureFilter> parse_texture_filter(std::string_view name);
-std::string_view wrap_mode_name(WrapMode wrap);
-std::optional<WrapMode> parse_wrap_mode(std::string_view name);
-std::string_view lod_formula_name(LodFormula formula);
-std::optional<LodFormula> parse_lod_formula(std::string_view name);
+// Names of the values (names.hpp).
+std::string_view name_of(TextureFilter value);
+template <>
+std::span<const TextureFilter> values_of<TextureFilter>();
+std::string_view name_of(WrapMode value);
+template <>
+std::span<const WrapMode> values_of<WrapMode>();
+std::string_view name_of(LodFormula value);
+template <>
+std::span<const LodFormula> values_of<LodFormula>();
 
 }  // namespace edgewise

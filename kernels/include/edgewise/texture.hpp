@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "edgewise/framebuffer.hpp"  // TileAlignedAllocator
+#include "edgewise/names.hpp"
 
 namespace edgewise {
 
@@ -125,7 +126,15 @@ double linear_to_srgb(double linear);
 // The 256 decoded values of 8-bit sRGB codes, as float (the fast kernels' table).
 std::span<const float, 256> srgb_decode_table();
 
-std::string_view pyramid_filter_name(PyramidFilter filter);
-std::optional<PyramidFilter> parse_pyramid_filter(std::string_view name);
+// Names of the values (names.hpp).
+std::string_view name_of(TexelFormat value);
+template <>
+std::span<const TexelFormat> values_of<TexelFormat>();
+std::string_view name_of(ColorEncoding value);
+template <>
+std::span<const ColorEncoding> values_of<ColorEncoding>();
+std::string_view name_of(PyramidFilter value);
+template <>
+std::span<const PyramidFilter> values_of<PyramidFilter>();
 
 }  // namespace edgewise
