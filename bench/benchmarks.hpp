@@ -11,7 +11,7 @@ void register_coverage_benchmarks();
 
 // Shading/<isa>/area:<px> (the peer-comparable draw() workload) and
 // ShadingMethod/<isa>/<method>/<perspective>/area:<px>, for every supported ISA and the reference.
-void register_shading_benchmarks();
+void register_draw_benchmarks();
 
 // Sample/<isa>/<filter>/<stream> for every supported ISA and the reference, and
 // SamplePeer/oiio/<mode>/<stream> (OpenImageIO's TextureSystem) when it is built in.

@@ -32,7 +32,7 @@ TARGET_AVX2_OVER_REFERENCE_AT_1000 = 8.0
 # per-triangle work, large ones by per-fragment work.
 SHADING_TARGET = {8: ("triangles", 35e6), 64: ("triangles", 15e6), 1000: ("fragments", 1.2e9),
                   200000: ("fragments", 2e9)}
-# The reference draws the first 1/REFERENCE_SHARE of each shading set (bench/shading_bench.cpp).
+# The reference draws the first 1/REFERENCE_SHARE of each shading set (bench/draw_bench.cpp).
 REFERENCE_SHARE = 16
 # The production interpolation setting, which the method table is relative to.
 BASELINE_METHOD = ("plane_equations", "correct")

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 
 namespace edgewise {
 // Readable statuses in GoogleTest's messages.

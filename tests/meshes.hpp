@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 #include "random.hpp"
 
 namespace edgewise::test {

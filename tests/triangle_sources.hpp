@@ -5,7 +5,7 @@
 #include <span>
 #include <string_view>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 #include "random.hpp"
 
 namespace edgewise::test {

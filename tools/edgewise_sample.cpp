@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "edgewise/isa.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "sample/command_line.hpp"
 #include "sample/record_files.hpp"

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "edgewise/isa.hpp"
-#include "edgewise/render.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/draw.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "texture_quality/command_line.hpp"
 #include "texture_quality/drawn_view.hpp"

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 #include "exact_area_triangles.hpp"
 
 namespace {

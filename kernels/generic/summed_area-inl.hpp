@@ -1,4 +1,4 @@
-// The summed-area-table box filter (sampler.hpp, summed_area), in double precision as the table
+// The summed-area-table box filter (sample.hpp, summed_area), in double precision as the table
 // is: each query's box, moved exactly by whole periods, becomes at most eight weighted table
 // entries per axis (kernels/reference/sample_reference.cpp derives the same terms), and the 64
 // products are summed with all four channels of an entry in one double batch (two on SSE and

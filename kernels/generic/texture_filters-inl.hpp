@@ -1,4 +1,4 @@
-// The texture filters over a batch of queries, as defined in sampler.hpp: the level-0 filters
+// The texture filters over a batch of queries, as defined in sample.hpp: the level-0 filters
 // (nearest, bilinear, bicubic), the level of detail, and the filters built from bilinear taps
 // (mip_nearest, trilinear, supersample, ripmap, anisotropic).
 //
@@ -116,7 +116,7 @@ class TextureFilters {
     return sum;
   }
 
-  // lambda = log2(rho) + bias (sampler.hpp); +inf where a derivative is not finite.
+  // lambda = log2(rho) + bias (sample.hpp); +inf where a derivative is not finite.
   [[gnu::always_inline]] Floats level_of_detail(const QueryLanes<Arch>& q) const {
     const Floats ux = q.dsdx * Floats(texture_.width), vx = q.dtdx * Floats(texture_.height);
     const Floats uy = q.dsdy * Floats(texture_.width), vy = q.dtdy * Floats(texture_.height);
@@ -237,7 +237,7 @@ class TextureFilters {
     return weighted_sum<Arch>(top, Floats(1.0f) - ft, bottom, ft);
   }
 
-  // Elliptical weighted average (sampler.hpp, ewa; kernels/reference/sample_reference.cpp).
+  // Elliptical weighted average (sample.hpp, ewa; kernels/reference/sample_reference.cpp).
   Rgba<Arch> ewa(const QueryLanes<Arch>& q) const {
     const Floats ux = q.dsdx * Floats(texture_.width), vx = q.dtdx * Floats(texture_.height);
     const Floats uy = q.dsdy * Floats(texture_.width), vy = q.dtdy * Floats(texture_.height);

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

@@ -34,7 +34,7 @@
 
 #include <xsimd/xsimd.hpp>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

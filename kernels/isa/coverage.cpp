@@ -1,4 +1,4 @@
-// The coverage kernels (raster.hpp's rasterize() and count_coverage()), compiled once per ISA.
+// The coverage kernels (coverage.hpp's rasterize() and count_coverage()), compiled once per ISA.
 #include "../src/isa_build.hpp"
 
 #include <bit>

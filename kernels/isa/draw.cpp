@@ -1,4 +1,4 @@
-// The drawing kernels (render.hpp's draw()): the vertex transform and the shading of
+// The drawing kernels (draw.hpp's draw()): the vertex transform and the shading of
 // screen-space triangles, compiled once per ISA.
 #include "../src/isa_build.hpp"
 

@@ -1,4 +1,4 @@
-// The sampling kernels (sampler.hpp's sample(), and the texture lookups of draw()), compiled
+// The sampling kernels (sample.hpp's sample(), and the texture lookups of draw()), compiled
 // once per ISA.
 #include "../src/isa_build.hpp"
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 
 namespace edgewise::reference {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "../src/kernel_table.hpp"
-#include "raster_reference.hpp"
+#include "coverage_reference.hpp"
 #include "sample_reference.hpp"
 
 namespace edgewise::isa_reference {

@@ -1,4 +1,4 @@
-// The scalar reference sampler: every filter of sampler.hpp in double precision, in plain loops,
+// The scalar reference sampler: every filter of sample.hpp in double precision, in plain loops,
 // taken literally from its definition. It is the oracle the fast kernels are tested against, so
 // it is written to be read, not to be fast; it shares no code with them.
 //
@@ -30,7 +30,7 @@
 #include <cstdint>
 #include <span>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 
 namespace edgewise::reference {
@@ -149,7 +149,7 @@ inline constexpr double kMaxEwaBoxTexels = 4194304.0;  // 2^22
 Rgba ewa_level(const Texture& texture, const TextureLevel& level, WrapMode wrap_s, WrapMode wrap_t,
                double s, double t, const EwaFootprint& footprint);
 
-// EWA as sampler.hpp defines it, with one addition bounding the work: while the ellipse's bounding
+// EWA as sample.hpp defines it, with one addition bounding the work: while the ellipse's bounding
 // box in level l0 holds more than kMaxEwaBoxTexels texels, l0 moves one level coarser and the blend
 // is dropped (f = 0). With lod_bias >= -2 (and max_anisotropy <= 64) it never applies: the box in
 // l0 is then below (2 (8 M + 1) + 1)^2 texels, about 2^20 for M = 64; a strongly negative bias

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 
 // Why kGuardBandMargin = 1/16 px is enough. Let G = kGuardBand - kGuardBandMargin and u = 2^-24.
 // Every output vertex satisfies x <= fl(x_max * w) exactly (clip_triangle clamps to the same

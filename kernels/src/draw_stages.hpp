@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "edgewise/render.hpp"
+#include "edgewise/draw.hpp"
 #include "kernel_table.hpp"
 
 namespace edgewise::detail {
@@ -31,7 +31,7 @@ struct DrawCall {
   bool has_work() const { return !clip.empty() && report.triangles != 0; }
 };
 
-// Checks the arguments (render.hpp says what throws) and chooses the ISA.
+// Checks the arguments (draw.hpp says what throws) and chooses the ISA.
 DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
 
 // The vertex stage: transform, clipping, screen mapping and snapping of every triangle, counted

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 
 namespace edgewise {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "edgewise/camera.hpp"
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 #include "isa_list.hpp"
 #include "sample_kernels.hpp"
 
@@ -29,14 +29,14 @@ struct ShadeCounts;
 
 struct KernelTable {
   Isa isa;  // the ISA the table's objects were compiled for
-  // Coverage (raster.hpp): tiles to a sink, or covered pixels counted.
+  // Coverage (coverage.hpp): tiles to a sink, or covered pixels counted.
   void (*rasterize)(const TriangleBatch& batch, CoverageSink& sink, RasterReport& report);
   void (*count_coverage)(const TriangleBatch& batch, RasterReport& report, std::uint64_t& pixels);
-  // Drawing (render.hpp): the vertex transform, out[i] = transform(m, in[i]) (camera.hpp) bit
+  // Drawing (draw.hpp): the vertex transform, out[i] = transform(m, in[i]) (camera.hpp) bit
   // for bit, and the screen-space triangles shaded into the framebuffer.
   void (*transform_vertices)(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);
   void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
-  // Sampling (sampler.hpp): queries and results as records, or as one array per field.
+  // Sampling (sample.hpp): queries and results as records, or as one array per field.
   SampleKernel sample;
   SampleFieldsKernel sample_fields;
 };

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "edgewise/render.hpp"
+#include "edgewise/draw.hpp"
 #include "kernel_table.hpp"
 #include "sample_kernels.hpp"
 

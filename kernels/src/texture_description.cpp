@@ -8,7 +8,7 @@
 namespace edgewise::detail {
 namespace {
 
-// The EWA weights as the kernels read them (sampler.hpp; the reference builds the same table in
+// The EWA weights as the kernels read them (sample.hpp; the reference builds the same table in
 // double): exp(-2 r2) - exp(-2) at r2 = i / 127, rounded once to float, and a trailing 0.
 const float* ewa_weights() {
   static const auto table = [] {

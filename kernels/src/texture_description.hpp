@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "edgewise/isa.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "sample_kernels.hpp"
 

@@ -11,7 +11,7 @@
 // (without division r = 1 and s, t are the planes' values). The derivatives:
 //   TextureDerivatives::analytic: ds/dx = (dx_slope of s/w - s * dx_slope of q) * r, and likewise
 //     for t and for y (without division, the planes' slopes);
-//   TextureDerivatives::quad: differences of s and t within the pixel's 2x2 quad (render.hpp).
+//   TextureDerivatives::quad: differences of s and t within the pixel's 2x2 quad (draw.hpp).
 // Division follows the shading kernels' rule: perspective-correct, every w within
 // [kMinClipW, kMaxClipW], and not all three w equal (then the affine values are exact).
 #pragma once
@@ -19,8 +19,8 @@
 #include <cstdint>
 
 #include "edgewise/interpolation.hpp"
-#include "edgewise/render.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/draw.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/vector.hpp"
 
 namespace edgewise::detail {

@@ -11,9 +11,9 @@
 // - anything outside the scissor, outside the target (the tile padding) or outside every
 //   triangle changes from the clear values, on any ISA or the reference;
 // - (one triangle per draw, so that each pixel's writer is known) a colour differs from the
-//   reference's by more than tests/render/colour_bounds.hpp allows for that pixel;
+//   reference's by more than tests/draw/colour_bounds.hpp allows for that pixel;
 // - (textured, one triangle per draw) a colour, the reference's included, lies outside the bound
-//   of tests/render/textured_bounds.hpp: the pixel's query recomputed by the kernels' formula
+//   of tests/draw/textured_bounds.hpp: the pixel's query recomputed by the kernels' formula
 //   (kernels/src/texture_planes.hpp) from the writer's snapped corners, its untextured colour
 //   from the reference's draw of the same triangle without the texture (whose depth must equal
 //   the textured draw's), nothing checked where the untextured colour bound is unbounded.
@@ -49,7 +49,7 @@
 //                                250, 251: max_anisotropy 0, 65; 252, 253: supersample_taps 0,
 //                                17; 254, 255: lod_bias inf, NaN
 //   per vertex: 2 numbers        the texture coordinates (s, t)
-// Texels are finite and within float texels' 2^10 [-1, 3], as tests/texture/sample_bounds.hpp
+// Texels are finite and within float texels' 2^10 [-1, 3], as tests/sample/sample_bounds.hpp
 // assumes; coordinates take any number, NaN and infinities included.
 // A number is a u8 tag: < 192 an i16 / 4096 (+-8 in 1/4096 steps), < 192 + 40 an entry of
 // kSpecialValues (zeros, +-1, the clip range's ends, the guard band, float's extremes, NaN,
@@ -78,13 +78,13 @@
 
 #include "edgewise/clip.hpp"
 #include "edgewise/edgewise.hpp"
-#include "edgewise/render.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/draw.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "random.hpp"
 #include "reference/interpolation_reference.hpp"
-#include "render/colour_bounds.hpp"
-#include "render/textured_bounds.hpp"
+#include "draw/colour_bounds.hpp"
+#include "draw/textured_bounds.hpp"
 #include "sampler_input.hpp"
 #include "seed_files.hpp"
 #include "src/texture_planes.hpp"
@@ -287,7 +287,7 @@ bool decode_texture(FuzzInput& in, Case& c) {
   if (t.variant != 247) c.texture = make_texture(t);
   d.texture = c.texture.get();
   c.texture_input = std::move(t);
-  // The cases render.hpp documents as std::invalid_argument (sampler.hpp's among them).
+  // The cases draw.hpp documents as std::invalid_argument (sample.hpp's among them).
   return c.uvs.size() != c.positions.size() || d.texture == nullptr ||
          c.texture_input->variant >= 250 ||
          (o.filter == TextureFilter::ripmap && !c.texture_input->build.ripmaps) ||
@@ -361,7 +361,7 @@ Case decode(std::span<const std::uint8_t> bytes) {
   if (color_short && !c.colors.empty()) c.colors.pop_back();
   const bool bad_texture = decode_texture(in, c);
 
-  // The cases render.hpp documents as std::invalid_argument.
+  // The cases draw.hpp documents as std::invalid_argument.
   const std::size_t n = c.positions.size();
   const std::size_t corners = c.indexed ? c.indices.size() : n;
   c.expect_invalid =
@@ -1021,7 +1021,7 @@ std::array<std::uint8_t, 4> channels_of(std::uint32_t code) {
           static_cast<std::uint8_t>(code >> 16), static_cast<std::uint8_t>(code >> 24)};
 }
 
-// What one writer of a textured pixel allows there (tests/render/textured_bounds.hpp).
+// What one writer of a textured pixel allows there (tests/draw/textured_bounds.hpp).
 struct WriterBound {
   TextureQuery query;
   double texel_bound, colour_error;

@@ -4,11 +4,11 @@
 // the reference sample them in one call. A finding prints the decoded input and every ISA's
 // output, then aborts, when:
 // - an ISA throws where the reference does not, or the reverse, or either disagrees with the
-//   decoder's prediction of std::invalid_argument (sampler.hpp's cases), or anything else escapes;
+//   decoder's prediction of std::invalid_argument (sample.hpp's cases), or anything else escapes;
 // - the double-precision reference is not finite (the texels are finite), or an ISA's result is
 //   not finite where the reference's is;
 // - a query with non-finite s or t does not give exactly (0, 0, 0, 0) on some ISA;
-// - a result lies further from the reference than tests/texture/sample_bounds.hpp allows for
+// - a result lies further from the reference than tests/sample/sample_bounds.hpp allows for
 //   that query (test::distance_to_reference > test::sample_bound).
 //
 // Input layout (missing bytes read as zero):
@@ -53,13 +53,13 @@
 #include <vector>
 
 #include "edgewise/edgewise.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "random.hpp"
 #include "reference/sample_reference.hpp"
 #include "sampler_input.hpp"
 #include "seed_files.hpp"
-#include "texture/sample_bounds.hpp"
+#include "sample/sample_bounds.hpp"
 
 namespace {
 
@@ -157,7 +157,7 @@ Case decode(std::span<const std::uint8_t> bytes) {
       *v = in.number();
     c.queries.push_back(q);
   }
-  // The cases sampler.hpp documents as std::invalid_argument.
+  // The cases sample.hpp documents as std::invalid_argument.
   c.expect_invalid = c.variant >= 250 || (o.filter == TextureFilter::ripmap && !c.build.ripmaps) ||
                      (o.filter == TextureFilter::summed_area && !c.build.summed_area_table);
   return c;

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 
 namespace edgewise::fuzz {

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 
 namespace edgewise::sample_cli_test {
 

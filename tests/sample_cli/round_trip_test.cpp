@@ -14,7 +14,7 @@
 
 #include "bitwise_compare.hpp"
 #include "edgewise/isa.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "isa_params.hpp"
 #include "query_mix.hpp"

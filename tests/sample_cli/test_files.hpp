@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/vector.hpp"
 
 namespace edgewise::sample_cli_test {

@@ -66,7 +66,7 @@ TEST(Quality, OpenImageIOBilinearAgreesWithEdgewise) {
 }
 
 // The second run scores the scalar reference on the same scenes. Every fast filter is within
-// 1/255 of its reference in each channel on 8-bit textures (sampler.hpp's contract, checked by
+// 1/255 of its reference in each channel on 8-bit textures (sample.hpp's contract, checked by
 // the sampler's tests); RMSE and the worst error against the same ground truth can then differ
 // by at most 1/255 (the triangle inequality, for the RMS and for the maximum).
 TEST(Quality, ReferenceScoresWithinTheSamplerBoundOfTheFastPath) {

@@ -22,7 +22,7 @@ EDGEWISE_DEMO_PACKAGES=(
   libxsimd-dev         # the library's only dependency: the SIMD batches its kernels are written in
   libopenimageio-dev   # image files: the tools write PNG images and read textures
   openimageio-tools    # OpenImageIO's CMake package imports its tools (/usr/bin/iconvert...): no configure without
-  libtinyobjloader-dev # edgewise-render reads OBJ meshes (tools/scene)
+  libtinyobjloader-dev # edgewise-render reads OBJ meshes (testing/scene)
 )
 
 # tools/check, stage by stage.

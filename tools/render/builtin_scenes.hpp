@@ -1,5 +1,5 @@
 // The scenes edgewise-render draws without a file, each with the camera it is meant to be seen
-// from (tools/scene/procedural.hpp builds the meshes).
+// from (testing/scene/procedural.hpp builds the meshes).
 #pragma once
 
 #include <string>

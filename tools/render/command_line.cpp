@@ -9,7 +9,7 @@
 #include "option_values.hpp"
 #include "edgewise/interpolation.hpp"
 #include "edgewise/isa.hpp"
-#include "edgewise/raster.hpp"
+#include "edgewise/coverage.hpp"
 #include "render/builtin_scenes.hpp"
 #include "render/image_writer.hpp"
 #include "render/render_texture.hpp"

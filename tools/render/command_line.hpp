@@ -8,8 +8,8 @@
 #include <string>
 #include <string_view>
 
-#include "edgewise/render.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/draw.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
 
@@ -26,9 +26,9 @@ struct CameraOverrides {
 };
 
 // Back faces are culled by default. Meshes wind their front faces counter-clockwise as seen
-// from the front (tools/scene/mesh.hpp); the projection keeps what the eye sees, so on screen they
-// still look counter-clockwise. The viewport's y flip only changes the sign of the winding
-// formula, which raster.hpp's CullMode already defines in y-down screen coordinates: front faces
+// from the front (testing/scene/mesh.hpp); the projection keeps what the eye sees, so on screen
+// they still look counter-clockwise. The viewport's y flip only changes the sign of the winding
+// formula, which coverage.hpp's CullMode already defines in y-down screen coordinates: front faces
 // are CullMode::counter_clockwise there, and the back faces, to remove, clockwise.
 inline constexpr CullMode kBackFaceCull = CullMode::clockwise;
 

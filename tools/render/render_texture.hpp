@@ -7,7 +7,7 @@
 #include <iterator>
 #include <string>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "render/command_line.hpp"
 

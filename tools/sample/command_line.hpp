@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "edgewise/isa.hpp"
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 
 namespace edgewise::sample_tool {

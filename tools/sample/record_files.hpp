@@ -9,7 +9,7 @@
 #include <span>
 #include <string>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/vector.hpp"
 
 namespace edgewise::sample_tool {

@@ -7,7 +7,7 @@
 #include <span>
 
 #include "edgewise/isa.hpp"
-#include "edgewise/render.hpp"
+#include "edgewise/draw.hpp"
 #include "edgewise/texture.hpp"
 #include "texture_scene/texture_view.hpp"
 #include "texture_scene/view_mesh.hpp"

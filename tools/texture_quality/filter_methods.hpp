@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 
 namespace edgewise::texture_quality {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "edgewise/sampler.hpp"
+#include "edgewise/sample.hpp"
 #include "edgewise/vector.hpp"
 #include "texture_scene/linear_image.hpp"
 

@@ -46,7 +46,7 @@ Mat4 orthographic(float left, float right, float bottom, float top, float near, 
 Mat4 look_at(const Vec3& eye, const Vec3& target, const Vec3& up);
 
 // The pixel rectangle [0, width) x [0, height) that NDC [-1, 1]^2 maps to;
-// sizes 1 .. kMaxTargetSize (raster.hpp).
+// sizes 1 .. kMaxTargetSize (coverage.hpp).
 struct Viewport {
   std::int32_t width = 0, height = 0;
 };

@@ -3,7 +3,7 @@
 // Layout: the target is padded to whole tiles; tile (tx, ty) holds 64 consecutive pixels, row by
 // row, at index (ty * tiles_x + tx) * 64, and pixel (x, y) of the target is element
 // ((y / 8) * tiles_x + x / 8) * 64 + (y % 8) * 8 + x % 8 of both the colour and the depth array.
-// A tile is exactly one coverage mask (raster.hpp): a row of 8 pixels is 32 bytes of colour and
+// A tile is exactly one coverage mask (coverage.hpp): a row of 8 pixels is 32 bytes of colour and
 // 32 of depth, one AVX2 register each, and a tile's 512 bytes stay together in cache. Padding
 // pixels are never drawn. read_rgba8() and read_depth() convert to the usual row-major order.
 //
@@ -43,7 +43,7 @@ struct TileAlignedAllocator {
 
 class Framebuffer {
  public:
-  // Throws std::invalid_argument for a side outside 0 .. kMaxTargetSize (raster.hpp).
+  // Throws std::invalid_argument for a side outside 0 .. kMaxTargetSize (coverage.hpp).
   Framebuffer(std::int32_t width, std::int32_t height);
 
   std::int32_t width() const { return width_; }

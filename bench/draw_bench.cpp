@@ -1,0 +1,278 @@
+// Shaded drawing throughput through draw(), for every supported ISA and the reference:
+// - Shading/<isa>/area:<px>: the peer-comparable workload. One thread, a 1920x1080 Framebuffer
+//   (RGBA8 + float32 depth), depth test less with writes, Gouraud colour; vertices in pixels
+//   through an orthographic camera, random depth and colour per vertex; 200k triangles of 8 px,
+//   100k of 64 px, 20k of 1000 px or 200 of 200000 px per draw() call.
+// - ShadingMethod/<isa>/<method>/<perspective>/area:<px>: the same triangles on screen (64 and
+//   1000 px) seen through a perspective camera, so that w varies across each triangle, drawn with
+//   every interpolation method, perspective-correct and affine.
+// One iteration is one draw() call over the whole set, from the vertex arrays to the written
+// pixels; the framebuffer is cleared before each call with the timer paused.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <map>
+#include <initializer_list>
+#include <random>
+#include <span>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
+
+#include "benchmarks.hpp"
+#include "edgewise/edgewise.hpp"
+#include "exact_area_triangles.hpp"
+#include "src/draw_stages.hpp"
+
+namespace edgewise::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0003;
+
+struct ShadingCase {
+  int area;               // px^2 per triangle
+  std::size_t triangles;  // per draw() call
+};
+constexpr ShadingCase kCases[] = {{8, 200'000}, {64, 100'000}, {1000, 20'000}, {200'000, 200}};
+// The interpolation methods differ per fragment: compared where fragments dominate (1000 px) and
+// where per-triangle setup still shows (64 px).
+constexpr int kMethodAreas[] = {64, 1000};
+// The sweep is 24 benchmarks per ISA: a shorter time per repetition than the suite's default
+// keeps a full five-repetition run within minutes. A call takes 10-200 ms, so each repetition
+// still averages over one to twenty calls.
+constexpr double kMethodMinTimeSeconds = 0.2;
+
+// The reference shades every candidate pixel in double precision, about 20 M fragments/s: a whole
+// 1000 or 200000 px set would take 1-2 s per call. It draws the first 1/16 of each set instead.
+constexpr std::size_t kReferenceShare = 16;
+
+// View-space distances of the vertices, inside the cameras' near and far planes. Triangles are
+// never clipped (the benchmark checks it).
+constexpr float kNear = 1.0f, kFar = 100.0f;
+constexpr double kMinDistance = 2.0, kMaxDistance = 50.0;
+constexpr float kFovy = 1.0f;  // radians, for the perspective camera
+
+// Clear colour with alpha 0: every written pixel has alpha 255 (vertex alphas are 1), so the
+// pixels written can be counted after the timed loop.
+constexpr Vec4 kClearColor{0.1f, 0.2f, 0.3f, 0.0f};
+constexpr float kClearDepth = 1.0f;
+
+// With random placement the expected number of covered samples equals the area, so a set covers
+// about area * triangles samples; a result far from that means the benchmark measures something
+// else (culled or clipped triangles, a broken kernel).
+constexpr double kFragmentCountTolerance = 0.05;
+
+enum class Camera { orthographic, perspective };
+
+struct Scene {
+  std::vector<Vec3> positions;  // three per triangle
+  std::vector<Vec4> colors;
+};
+
+// A view-space point that `camera` maps to screen pixel (sx, sy) at distance `distance`.
+Vec3 unproject(Camera camera, double sx, double sy, double distance) {
+  if (camera == Camera::orthographic) return {float(sx), float(sy), float(-distance)};
+  // Inverse of perspective() and to_screen(): NDC times distance over the focal scale.
+  const double focal = 1.0 / std::tan(0.5 * double(kFovy));
+  const double aspect = double(kWidth) / double(kHeight);
+  const double ndc_x = 2.0 * sx / kWidth - 1.0, ndc_y = 1.0 - 2.0 * sy / kHeight;
+  return {float(ndc_x * distance * aspect / focal), float(ndc_y * distance / focal),
+          float(-distance)};
+}
+
+Mat4 camera_transform(Camera camera) {
+  if (camera == Camera::orthographic) {
+    // x, y in pixels with y down; z in view space gives depth.
+    return orthographic(0.0f, float(kWidth), float(kHeight), 0.0f, kNear, kFar);
+  }
+  return perspective(kFovy, float(kWidth) / float(kHeight), kNear, kFar);
+}
+
+const Scene& scene(Camera camera, const ShadingCase& c) {
+  static std::map<std::tuple<Camera, int>, Scene> cache;
+  auto [it, inserted] = cache.try_emplace({camera, c.area});
+  if (!inserted) return it->second;
+  Scene& s = it->second;
+  const std::vector<Vec2> pixels =
+      workload::exact_area_triangles(c.triangles, c.area, kWidth, kHeight, kSeed);
+  std::mt19937_64 rng(kSeed + static_cast<std::uint64_t>(c.area));
+  std::uniform_real_distribution<double> distance(kMinDistance, kMaxDistance);
+  std::uniform_real_distribution<float> channel(0.0f, 1.0f);
+  s.positions.reserve(pixels.size());
+  s.colors.reserve(pixels.size());
+  for (const Vec2& p : pixels) {
+    s.positions.push_back(unproject(camera, p.x, p.y, distance(rng)));
+    s.colors.push_back({channel(rng), channel(rng), channel(rng), 1.0f});
+  }
+  return s;
+}
+
+std::size_t triangles_for(Isa isa, const ShadingCase& c) {
+  return isa == Isa::reference ? (c.triangles + kReferenceShare - 1) / kReferenceShare
+                               : c.triangles;
+}
+
+// Why a finished run does not measure the intended work, or empty.
+std::string check(const DrawReport& report, Isa isa, std::size_t triangles, int area,
+                  const Framebuffer& target) {
+  if (report.isa != isa) return "draw() ran another ISA than the one asked for";
+  if (report.rasterized != triangles || report.clipped != 0 || report.culled != 0 ||
+      report.outside != 0 || report.errors != 0) {
+    return "not every triangle was drawn unclipped (" + std::to_string(report.rasterized) + " of " +
+           std::to_string(triangles) + ")";
+  }
+  const double expected = double(area) * double(triangles);
+  if (std::abs(double(report.fragments) - expected) > kFragmentCountTolerance * expected) {
+    return "covered " + std::to_string(report.fragments) + " samples per call, expected about " +
+           std::to_string(std::uint64_t(expected));
+  }
+  std::uint64_t distinct = 0;
+  for (std::int32_t y = 0; y < target.height(); ++y) {
+    for (std::int32_t x = 0; x < target.width(); ++x)
+      distinct += (target.color(x, y) >> 24) != 0;
+  }
+  // Each written pixel passed at least once; the first fragment on a cleared pixel always passes.
+  if (distinct == 0 || report.fragments_passed < distinct ||
+      report.fragments_passed > report.fragments) {
+    return "inconsistent writes: " + std::to_string(report.fragments_passed) + " passed, " +
+           std::to_string(distinct) + " pixels written, " + std::to_string(report.fragments) +
+           " covered";
+  }
+  return {};
+}
+
+void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
+                const DrawOptions& options) {
+  const Scene& s = scene(camera, c);
+  const std::size_t triangles = triangles_for(isa, c);
+  DrawMesh mesh;
+  mesh.positions = std::span(s.positions).first(3 * triangles);
+  mesh.colors = std::span(s.colors).first(3 * triangles);
+  Framebuffer target(kWidth, kHeight);
+
+  DrawReport last;
+  double vertex_seconds = 0.0, raster_seconds = 0.0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    target.clear(kClearColor, kClearDepth);
+    state.ResumeTiming();
+    // draw(), stage by stage (kernels/src/draw_stages.hpp), to time its vertex stage apart.
+    detail::DrawCall call = detail::prepare_draw(target, mesh, options);
+    if (!call.has_work()) {
+      state.SkipWithError("the workload draws nothing");
+      break;
+    }
+    const auto start = Clock::now();
+    const detail::ScreenMesh screen = detail::map_to_screen(call, target, mesh, options);
+    const auto mapped = Clock::now();
+    detail::shade_screen_mesh(call, target, screen, options);
+    benchmark::DoNotOptimize(target.color_tiles());
+    benchmark::ClobberMemory();
+    raster_seconds += std::chrono::duration<double>(Clock::now() - mapped).count();
+    vertex_seconds += std::chrono::duration<double>(mapped - start).count();
+    last = call.report;
+  }
+
+  const std::string problem = check(last, isa, triangles, c.area, target);
+  if (!problem.empty()) state.SkipWithError(problem.c_str());
+  // Every call redraws the same set into a cleared target: the same counts each iteration.
+  const double iterations = double(state.iterations());
+  const auto rate = [&](double per_call) {
+    return benchmark::Counter(per_call * iterations, benchmark::Counter::kIsRate);
+  };
+  state.counters["triangles"] = rate(double(triangles));
+  state.counters["fragments"] = rate(double(last.fragments));
+  state.counters["written"] = rate(double(last.fragments_passed));
+  // Share of draw()'s time spent in the vertex stage (transform, clipping, screen mapping).
+  state.counters["vertex_share"] = vertex_seconds + raster_seconds > 0.0
+                                       ? vertex_seconds / (vertex_seconds + raster_seconds)
+                                       : 0.0;
+}
+
+DrawOptions options_for(Isa isa, Camera camera) {
+  DrawOptions options;
+  options.transform = camera_transform(camera);
+  options.depth_test = DepthTest::less;
+  options.depth_write = true;
+  options.shading = Shading::gouraud;
+  options.isa = isa;
+  return options;
+}
+
+void shading(benchmark::State& state, Isa isa, ShadingCase c) {
+  draw_scene(state, isa, Camera::orthographic, c, options_for(isa, Camera::orthographic));
+}
+
+// The same workload without hierarchical depth: what skipping hidden tiles is worth.
+void shading_without_tile_depth(benchmark::State& state, Isa isa, ShadingCase c) {
+  DrawOptions options = options_for(isa, Camera::orthographic);
+  options.hierarchical_depth = false;
+  draw_scene(state, isa, Camera::orthographic, c, options);
+}
+
+void shading_method(benchmark::State& state, Isa isa, ShadingCase c, InterpolationMethod method,
+                    Perspective perspective) {
+  DrawOptions options = options_for(isa, Camera::perspective);
+  options.interpolation = method;
+  options.perspective = perspective;
+  draw_scene(state, isa, Camera::perspective, c, options);
+}
+
+// Benchmark names: parts joined by '/'.
+std::string joined(std::initializer_list<std::string_view> parts) {
+  std::string name;
+  for (std::string_view part : parts) {
+    if (!name.empty()) name += '/';
+    name += part;
+  }
+  return name;
+}
+
+std::string area_label(const ShadingCase& c) {
+  return "area:" + std::to_string(c.area);
+}
+
+}  // namespace
+
+void register_draw_benchmarks() {
+  for (Isa isa : supported_isas()) {
+    for (const ShadingCase& c : kCases) {
+      const std::string name = joined({"Shading", name_of(isa), area_label(c)});
+      benchmark::RegisterBenchmark(name.c_str(), shading, isa, c)->Unit(benchmark::kMicrosecond);
+    }
+  }
+  for (Isa isa : supported_isas()) {
+    if (isa == Isa::reference) continue;  // the reference never skips tiles
+    for (const ShadingCase& c : kCases) {
+      const std::string name = joined({"ShadingWithoutTileDepth", name_of(isa), area_label(c)});
+      benchmark::RegisterBenchmark(name.c_str(), shading_without_tile_depth, isa, c)
+          ->Unit(benchmark::kMicrosecond);
+    }
+  }
+  for (Isa isa : supported_isas()) {
+    for (InterpolationMethod method : kInterpolationMethods) {
+      for (Perspective perspective : {Perspective::correct, Perspective::affine}) {
+        for (const ShadingCase& c : kCases) {
+          if (std::find(std::begin(kMethodAreas), std::end(kMethodAreas), c.area) ==
+              std::end(kMethodAreas)) {
+            continue;
+          }
+          const std::string name = joined({"ShadingMethod", name_of(isa), name_of(method),
+                                           name_of(perspective), area_label(c)});
+          benchmark::RegisterBenchmark(name.c_str(), shading_method, isa, c, method, perspective)
+              ->Unit(benchmark::kMicrosecond)
+              ->MinTime(kMethodMinTimeSeconds);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace edgewise::bench

@@ -1,0 +1,129 @@
+// Drawing shaded, depth-tested triangle meshes into a Framebuffer.
+//
+// The pipeline: vertices are transformed to clip space (camera.hpp), triangles are clipped
+// (clip.hpp) and mapped to the screen, snapped to 1/256 px like every coverage decision, culled
+// by winding, rasterized with the exact coverage of coverage.hpp, depth-tested, shaded, written.
+//
+// Depth is z/w, interpolated linearly in screen space in float32 by one fixed formula (see
+// kernels/src/depth_plane.hpp), so depth-test outcomes are identical on every ISA and in the
+// scalar reference. Colours and normals are interpolated by the chosen method, perspective-
+// correct by default, within the bounds derived in the kernels.
+//
+// Texturing (DrawOptions::texture): texture coordinates are interpolated by plane equations of
+// s/w, t/w and 1/w (of s and t under Perspective::affine), each pixel's (s, t) and derivatives go
+// to the sampler (sample.hpp) with the chosen filter, and the filtered texel multiplies the
+// shaded colour channel by channel (flat, Gouraud or diffuse, as without a texture). Coordinates
+// and derivatives come from one fixed float32 formula (kernels/src/texture_planes.hpp), so every
+// ISA and the scalar reference sample the texture at the same queries; the texture-coordinate
+// planes do not depend on the interpolation method, which applies to colours and normals.
+//
+// Thread safety: draw() keeps no state between calls. Calls on different framebuffers may run at
+// once, sharing meshes and textures (only read); two calls on the same framebuffer may not.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "edgewise/camera.hpp"
+#include "edgewise/framebuffer.hpp"
+#include "edgewise/interpolation.hpp"
+#include "edgewise/isa.hpp"
+#include "edgewise/coverage.hpp"
+#include "edgewise/sample.hpp"
+#include "edgewise/texture.hpp"
+#include "edgewise/vector.hpp"
+#include "edgewise/names.hpp"
+
+namespace edgewise {
+
+// Passes when (fragment depth) OP (stored depth).
+enum class DepthTest : std::uint8_t { less, less_equal, greater, always, never };
+
+enum class Shading : std::uint8_t {
+  flat,     // every pixel takes the colour of the triangle's first vertex
+  gouraud,  // vertex colours interpolated
+  diffuse,  // interpolated colour times (ambient + (1 - ambient) max(0, n . l)), n the
+            // interpolated normal renormalized per pixel
+};
+
+// Where the sampler's screen derivatives (dsdx, dtdx, dsdy, dtdy) come from.
+enum class TextureDerivatives : std::uint8_t {
+  // Differences within 2x2 pixel quads, as GPUs take them: dsdx at (x, y) is
+  // s(x | 1, y) - s(x & ~1, y), dsdy is s(x, y | 1) - s(x, y & ~1) (each pixel's own row and
+  // column of its quad), with s evaluated at every pixel of a quad the triangle touches, covered
+  // or not. Exact for affine mappings up to rounding; a one-pixel secant under perspective.
+  quad,
+  // The exact derivatives of the projective mapping at the pixel centre, from the planes of
+  // s/w, t/w and q = 1/w: ds/dx = (d(s/w)/dx - s dq/dx) / q, and likewise for t and y.
+  analytic,
+};
+
+struct DrawTexture {
+  const Texture* texture = nullptr;  // read during draw() only
+  SamplerOptions sampler;
+  TextureDerivatives derivatives = TextureDerivatives::quad;
+};
+
+// The mesh to draw; spans are read during draw() only.
+struct DrawMesh {
+  std::span<const Vec3> positions;
+  std::span<const Vec4> colors;            // linear RGBA per vertex; empty: opaque white
+  std::span<const Vec3> normals;           // per vertex; needed by Shading::diffuse
+  std::span<const std::uint32_t> indices;  // three per triangle; empty: vertices 3t .. 3t + 2
+  std::span<const Vec2> uvs{};             // texture coordinates (s, t) per vertex; needed with
+                                           // a texture, ignored without one
+};
+
+struct DrawOptions {
+  Mat4 transform = identity();     // object space to clip space
+  CullMode cull = CullMode::none;  // winding on screen (y down), as coverage.hpp defines it
+  DepthTest depth_test = DepthTest::less;
+  bool depth_write = true;
+  Shading shading = Shading::gouraud;
+  InterpolationMethod interpolation = InterpolationMethod::plane_equations;
+  Perspective perspective = Perspective::correct;
+  Vec3 light_direction{0.0f, 0.0f, 1.0f};  // towards the light, in the normals' space
+  float ambient = 0.15f;
+  // Multiplies the shaded colour by the filtered texel at each pixel (see the top of this file).
+  std::optional<DrawTexture> texture;
+  // Skip 8x8 tiles whose stored depth the triangle cannot pass anywhere (less and less_equal
+  // tests), from a per-tile depth bound the framebuffer keeps. Outcomes are the same either way.
+  bool hierarchical_depth = true;
+  std::optional<PixelRect> scissor;  // intersected with the framebuffer
+  std::optional<Isa> isa;            // default: active_isa()
+};
+
+struct DrawReport {
+  std::uint64_t triangles = 0;  // in the mesh
+  std::uint64_t clipped = 0;    // needed clipping (and produced this many more triangles:)
+  std::uint64_t clip_triangles = 0;
+  std::uint64_t outside = 0;           // entirely outside the view volume
+  std::uint64_t culled = 0;            // by winding or zero area after snapping
+  std::uint64_t errors = 0;            // non-finite or out-of-range positions, bad indices
+  std::uint64_t rasterized = 0;        // screen triangles handed to the rasterizer
+  std::uint64_t fragments = 0;         // covered samples
+  std::uint64_t fragments_passed = 0;  // of those, passing the depth test (and so written)
+  std::uint64_t tiles_skipped = 0;     // covered tiles rejected whole by hierarchical depth
+  Isa isa = Isa::reference;
+};
+
+// Throws std::invalid_argument for inconsistent spans (attribute counts, index count not a
+// multiple of 3, diffuse without normals, a texture without uvs), a null texture, sampler
+// options sample() refuses, an inverted scissor or an unsupported ISA. Bad geometry is counted
+// in the report, never drawn. Non-finite uvs give the sampler's defined results (sample.hpp).
+DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
+
+// Names of the values (names.hpp).
+std::string_view name_of(DepthTest value);
+template <>
+std::span<const DepthTest> values_of<DepthTest>();
+std::string_view name_of(Shading value);
+template <>
+std::span<const Shading> values_of<Shading>();
+std::string_view name_of(TextureDerivatives value);
+template <>
+std::span<const TextureDerivatives> values_of<TextureDerivatives>();
+
+}  // namespace edgewise

@@ -1,0 +1,136 @@
+#include "coverage_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "../src/kernel_table.hpp"
+
+namespace edgewise::reference {
+namespace {
+
+constexpr double kFixedScale = 256.0;
+constexpr double kBandFixed = 32768.0 * kFixedScale;
+
+// Twice the signed area of (a, b, c) in fixed-point units squared.
+std::int64_t cross(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
+                   std::int64_t cx, std::int64_t cy) {
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+// docs/DESIGN.md, "Fill rule and watertightness": a top edge is exactly horizontal with the third
+// vertex below it (larger y); a left edge is not horizontal and has the interior (the third
+// vertex's side) to its right.
+bool is_top_left(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
+                 std::int64_t cx, std::int64_t cy) {
+  if (ay == by) return cy > ay;
+  // x of the edge's line at height cy is xa + (xb - xa)(cy - ya)/(yb - ya); c is to the
+  // right when cx exceeds it. Multiply through by (yb - ya), minding its sign.
+  const std::int64_t lhs = (cx - ax) * (by - ay);
+  const std::int64_t rhs = (bx - ax) * (cy - ay);
+  return by > ay ? lhs > rhs : lhs < rhs;
+}
+
+}  // namespace
+
+TriangleStatus snap_and_classify(const Vec2& p0, const Vec2& p1, const Vec2& p2, CullMode cull,
+                                 SnappedTriangle& out) {
+  const Vec2 p[3] = {p0, p1, p2};
+  for (const Vec2& v : p) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y)) return TriangleStatus::error_non_finite;
+  }
+  for (int i = 0; i < 3; ++i) {
+    const double sx = std::nearbyint(static_cast<double>(p[i].x) * kFixedScale);
+    const double sy = std::nearbyint(static_cast<double>(p[i].y) * kFixedScale);
+    if (sx < -kBandFixed || sx >= kBandFixed || sy < -kBandFixed || sy >= kBandFixed) {
+      return TriangleStatus::error_outside_guard_band;
+    }
+    out.x[i] = static_cast<std::int64_t>(sx);
+    out.y[i] = static_cast<std::int64_t>(sy);
+  }
+  const std::int64_t area2 = cross(out.x[0], out.y[0], out.x[1], out.y[1], out.x[2], out.y[2]);
+  if (area2 == 0) return TriangleStatus::culled_zero_area;
+  const bool clockwise = area2 > 0;  // y points down, so a positive cross is clockwise
+  if ((cull == CullMode::clockwise && clockwise) ||
+      (cull == CullMode::counter_clockwise && !clockwise)) {
+    return TriangleStatus::culled_winding;
+  }
+  return TriangleStatus::drawn;
+}
+
+bool covers(const SnappedTriangle& t, std::int32_t px, std::int32_t py) {
+  const std::int64_t sx = std::int64_t{px} * 256 + 128;  // the pixel's center
+  const std::int64_t sy = std::int64_t{py} * 256 + 128;
+  const std::int64_t area2 = cross(t.x[0], t.y[0], t.x[1], t.y[1], t.x[2], t.y[2]);
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const std::int64_t e = cross(t.x[i], t.y[i], t.x[j], t.y[j], sx, sy);
+    const bool inside = area2 > 0 ? e > 0 : e < 0;
+    const bool on_edge = e == 0;
+    if (!inside && !(on_edge && is_top_left(t.x[i], t.y[i], t.x[j], t.y[j], t.x[k], t.y[k]))) {
+      return false;
+    }
+  }
+  return true;
+}
+
+PixelRect candidate_pixels(const SnappedTriangle& t, const PixelRect& clip) {
+  const auto [min_x, max_x] = std::minmax({t.x[0], t.x[1], t.x[2]});
+  const auto [min_y, max_y] = std::minmax({t.y[0], t.y[1], t.y[2]});
+  // One pixel of margin on each side: floor division of the extremes is enough to be generous.
+  const auto pixel_floor = [](std::int64_t v) { return static_cast<std::int32_t>(v >> 8); };
+  return PixelRect{
+      std::max(clip.x0, pixel_floor(min_x) - 1), std::max(clip.y0, pixel_floor(min_y) - 1),
+      std::min(clip.x1, pixel_floor(max_x) + 2), std::min(clip.y1, pixel_floor(max_y) + 2)};
+}
+
+void for_each_tile(const SnappedTriangle& t, const PixelRect& clip,
+                   const std::function<void(std::uint32_t, std::uint32_t, std::uint64_t)>& tile) {
+  const PixelRect box = candidate_pixels(t, clip);
+  if (box.empty()) return;
+  for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
+    for (std::int32_t tx = box.x0 / kTileSize; tx <= (box.x1 - 1) / kTileSize; ++tx) {
+      std::uint64_t mask = 0;
+      for (int y = 0; y < kTileSize; ++y) {
+        for (int x = 0; x < kTileSize; ++x) {
+          const std::int32_t px = tx * kTileSize + x, py = ty * kTileSize + y;
+          const bool in_box = px >= box.x0 && px < box.x1 && py >= box.y0 && py < box.y1;
+          if (in_box && covers(t, px, py)) mask |= std::uint64_t{1} << (y * kTileSize + x);
+        }
+      }
+      if (mask != 0) tile(static_cast<std::uint32_t>(tx), static_cast<std::uint32_t>(ty), mask);
+    }
+  }
+}
+
+}  // namespace edgewise::reference
+
+namespace edgewise::reference {
+
+void for_each_drawn_triangle(
+    const detail::TriangleBatch& batch, RasterReport& report,
+    const std::function<void(std::size_t, const SnappedTriangle&)>& triangle) {
+  report.triangles += batch.triangle_count;
+  for (std::size_t t = 0; t < batch.triangle_count; ++t) {
+    std::size_t idx[3] = {3 * t, 3 * t + 1, 3 * t + 2};
+    if (batch.indices != nullptr) {
+      for (int i = 0; i < 3; ++i)
+        idx[i] = batch.indices[3 * t + i];
+    }
+    TriangleStatus status = TriangleStatus::error_bad_index;
+    SnappedTriangle snapped{};
+    if (idx[0] < batch.vertex_count && idx[1] < batch.vertex_count && idx[2] < batch.vertex_count) {
+      status = snap_and_classify(batch.vertices[idx[0]], batch.vertices[idx[1]],
+                                 batch.vertices[idx[2]], batch.cull, snapped);
+    }
+    if (batch.statuses != nullptr) batch.statuses[t] = status;
+    if (status == TriangleStatus::drawn) {
+      ++report.drawn;
+      triangle(t, snapped);
+    } else {
+      detail::count_not_drawn(report, t, status);
+    }
+  }
+}
+
+}  // namespace edgewise::reference

@@ -1,0 +1,51 @@
+// The scalar reference rasterizer: the oracle every fast path is compared with.
+//
+// It is the bounding-box loop of the textbook, made exact: every candidate pixel's sample is
+// tested against the three edge functions in 64-bit integers, straight from the snapped
+// vertices, with the top-left rule taken literally from its definition. It shares no code with
+// the fast kernels.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "edgewise/coverage.hpp"
+
+namespace edgewise::detail {
+struct TriangleBatch;
+struct ShadeBatch;
+struct ShadeCounts;
+}  // namespace edgewise::detail
+
+namespace edgewise::reference {
+
+// A triangle after snapping to 1/256 px, in its input order (not re-wound).
+struct SnappedTriangle {
+  std::int64_t x[3], y[3];
+};
+
+// Validates and snaps; returns drawn, culled_* or error_* exactly as the fast paths must.
+TriangleStatus snap_and_classify(const Vec2& p0, const Vec2& p1, const Vec2& p2, CullMode cull,
+                                 SnappedTriangle& out);
+
+// Whether the sample of pixel (px, py) is covered (the triangle must have nonzero area).
+bool covers(const SnappedTriangle& tri, std::int32_t px, std::int32_t py);
+
+// Pixels that may hold a covered sample (a generous box; covers() decides), clipped.
+PixelRect candidate_pixels(const SnappedTriangle& tri, const PixelRect& clip);
+
+// Delivers the triangle's tile masks row by row, as the fast paths do.
+void for_each_tile(const SnappedTriangle& tri, const PixelRect& clip,
+                   const std::function<void(std::uint32_t, std::uint32_t, std::uint64_t)>& tile);
+
+// Validates every triangle of a batch in order, counting statuses into the report (and the
+// batch's status array) as the fast paths do, and calls `triangle` for each drawn one.
+void for_each_drawn_triangle(
+    const detail::TriangleBatch& batch, RasterReport& report,
+    const std::function<void(std::size_t, const SnappedTriangle&)>& triangle);
+
+// The shading reference (draw_reference.cpp): depth test, double-precision interpolation and
+// shading of every covered sample.
+void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
+
+}  // namespace edgewise::reference

@@ -1,0 +1,159 @@
+// The shading reference: every candidate pixel of every drawn triangle tested for coverage by the
+// reference rasterizer, depth from the shared formula (so outcomes are the fast paths' exactly),
+// and colour from the double-precision interpolation references; textured, times the
+// double-precision sampling reference at the shared queries (texture_planes.hpp).
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "../src/depth_plane.hpp"
+#include "../src/framebuffer_access.hpp"
+#include "../src/shade_batch.hpp"
+#include "../src/texture_planes.hpp"
+#include "interpolation_reference.hpp"
+#include "coverage_reference.hpp"
+#include "sample_reference.hpp"
+
+namespace edgewise::reference {
+namespace {
+
+bool passes(DepthTest test, float z, float stored) {
+  switch (test) {
+    case DepthTest::less:
+      return z < stored;
+    case DepthTest::less_equal:
+      return z <= stored;
+    case DepthTest::greater:
+      return z > stored;
+    case DepthTest::always:
+      return true;
+    case DepthTest::never:
+      return false;
+  }
+  return false;
+}
+
+std::uint32_t to_byte(double v) {
+  const double clamped = v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;  // NaN: 0
+  return static_cast<std::uint32_t>(std::lrint(clamped * 255.0));
+}
+
+struct Corner {
+  Vec2 position;
+  float depth;
+  double w;
+  Vec4 color;
+  Vec3 normal;
+  Vec2 uv;
+};
+
+// The shaded colour at pixel center (px, py), before any texture.
+std::array<double, 4> shaded_colour(const detail::ShadeBatch& batch, const Corner c[3], double px,
+                                    double py) {
+  if (batch.shading == Shading::flat)
+    return {c[0].color.x, c[0].color.y, c[0].color.z, c[0].color.w};
+  ScreenTriangle screen;
+  for (int i = 0; i < 3; ++i) {
+    screen.x[i] = c[i].position.x;
+    screen.y[i] = c[i].position.y;
+    screen.w[i] = c[i].w;
+  }
+  const Weights w = interpolation_weights(batch.method, batch.perspective, screen, px, py);
+  std::array<double, 4> rgba = {0, 0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    rgba[0] += w.b[i] * c[i].color.x;
+    rgba[1] += w.b[i] * c[i].color.y;
+    rgba[2] += w.b[i] * c[i].color.z;
+    rgba[3] += w.b[i] * c[i].color.w;
+  }
+  if (batch.shading == Shading::diffuse) {
+    double n[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+      n[0] += w.b[i] * c[i].normal.x;
+      n[1] += w.b[i] * c[i].normal.y;
+      n[2] += w.b[i] * c[i].normal.z;
+    }
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double facing = n[0] * batch.light.x + n[1] * batch.light.y + n[2] * batch.light.z;
+    const double lambert = length > 0.0 ? std::fmax(facing / length, 0.0) : 0.0;
+    const double light = batch.ambient + (1.0 - static_cast<double>(batch.ambient)) * lambert;
+    for (int k = 0; k < 3; ++k)
+      rgba[k] *= light;
+  }
+  return rgba;
+}
+
+std::uint32_t pack(const std::array<double, 4>& rgba) {
+  return to_byte(rgba[0]) | to_byte(rgba[1]) << 8 | to_byte(rgba[2]) << 16 | to_byte(rgba[3]) << 24;
+}
+
+// Keeps the framebuffer's per-tile depth bounds valid after writing depth: every tile of the clip
+// rectangle gets its bound anew from its values (the reference does not use the bounds itself).
+void rebuild_depth_bounds(const detail::ShadeBatch& batch) {
+  const PixelRect& clip = batch.coverage.clip;
+  if (clip.empty()) return;
+  for (std::int32_t ty = clip.y0 / 8; ty <= (clip.y1 - 1) / 8; ++ty) {
+    for (std::int32_t tx = clip.x0 / 8; tx <= (clip.x1 - 1) / 8; ++tx) {
+      const std::size_t tile =
+          static_cast<std::size_t>(ty) * static_cast<std::size_t>(batch.tiles_x) +
+          static_cast<std::size_t>(tx);
+      batch.tile_max_depth[tile] = detail::tile_depth_bound(&batch.depth_tiles[tile * 64]);
+    }
+  }
+}
+
+}  // namespace
+
+void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
+  for_each_drawn_triangle(batch.coverage, report, [&](std::size_t t, const SnappedTriangle& tri) {
+    Corner c[3];
+    Vec2 p[3];
+    float z[3];
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t v = batch.coverage.indices ? batch.coverage.indices[3 * t + i] : 3 * t + i;
+      c[i] = {batch.coverage.vertices[v],
+              batch.depth[v],
+              batch.clip_w[v],
+              batch.colors[v],
+              batch.normals ? batch.normals[v] : Vec3{0, 0, 0},
+              batch.uvs ? batch.uvs[v] : Vec2{0, 0}};
+      p[i] = c[i].position;
+      z[i] = c[i].depth;
+    }
+    const detail::DepthPlane plane = detail::make_depth_plane(p, z);
+    detail::TexturePlanes texture_planes;
+    if (batch.texture != nullptr) {
+      const Vec2 uv[3] = {c[0].uv, c[1].uv, c[2].uv};
+      const double w[3] = {c[0].w, c[1].w, c[2].w};
+      texture_planes = detail::make_texture_planes(p, uv, w, batch.perspective);
+    }
+    const PixelRect box = candidate_pixels(tri, batch.coverage.clip);
+    for (std::int32_t py = box.y0; py < box.y1; ++py) {
+      for (std::int32_t px = box.x0; px < box.x1; ++px) {
+        if (!covers(tri, px, py)) continue;
+        ++counts.fragments;
+        const std::size_t index =
+            (static_cast<std::size_t>(py >> 3) * static_cast<std::size_t>(batch.tiles_x) +
+             static_cast<std::size_t>(px >> 3)) *
+                64 +
+            static_cast<std::size_t>((py & 7) * 8 + (px & 7));
+        const float depth = detail::depth_at(plane, px, py);
+        if (!passes(batch.depth_test, depth, batch.depth_tiles[index])) continue;
+        ++counts.passed;
+        if (batch.depth_write) batch.depth_tiles[index] = depth;
+        std::array<double, 4> rgba = shaded_colour(batch, c, px + 0.5, py + 0.5);
+        if (batch.texture != nullptr) {
+          const TextureQuery query =
+              detail::texture_query(texture_planes, batch.derivatives, px, py);
+          const Rgba texel = sample(*batch.texture, batch.sampler, query);
+          for (int k = 0; k < 4; ++k)
+            rgba[k] *= texel[k];
+        }
+        batch.color_tiles[index] = pack(rgba);
+      }
+    }
+  });
+  if (batch.depth_write && batch.tile_max_depth != nullptr) rebuild_depth_bounds(batch);
+}
+
+}  // namespace edgewise::reference
