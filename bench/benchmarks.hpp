@@ -9,6 +9,9 @@ inline constexpr int kWidth = 1920, kHeight = 1080;
 // Coverage/<isa>/area:<px> for every supported ISA, the reference included.
 void register_coverage_benchmarks();
 
+// Clip/<float32|reference>/<inside|near|guard_band>: clip_triangle() against its reference.
+void register_clip_benchmarks();
+
 // Shading/<isa>/area:<px> (the peer-comparable draw() workload) and
 // ShadingMethod/<isa>/<method>/<perspective>/area:<px>, for every supported ISA and the reference.
 void register_draw_benchmarks();

@@ -8,6 +8,7 @@
 
 int main(int argc, char** argv) {
   edgewise::bench::register_coverage_benchmarks();
+  edgewise::bench::register_clip_benchmarks();
   edgewise::bench::register_draw_benchmarks();
 #if defined(EDGEWISE_BENCH_SAMPLING)
   edgewise::bench::register_sample_benchmarks();

@@ -63,10 +63,10 @@ void sample_stream(benchmark::State& state, Isa isa, TextureFilter filter, Strea
   std::span<const TextureQuery> q = queries(stream);
   if (isa == Isa::reference) q = q.first(q.size() / kReferenceShare);
   std::vector<Vec4> out(q.size());
-  SamplerOptions options;
-  options.filter = filter;
+  SampleOptions options{SamplerOptions{}, isa};
+  options.sampler.filter = filter;
   for (auto _ : state) {
-    sample(t, options, q, out, isa);
+    sample(t, options, q, out);
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }

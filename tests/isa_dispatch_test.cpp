@@ -142,7 +142,7 @@ TEST(IsaDispatch, EveryEntryPointRefusesAnUnsupportedIsaAlike) {
     const Texture texture = Texture::from_rgba8(1, 1, texels, ColorEncoding::linear);
     const std::vector<TextureQuery> queries(1, TextureQuery{0.5f, 0.5f, 0, 0, 0, 0});
     std::vector<Vec4> results(1);
-    expect_refusal("sample", [&] { edgewise::sample(texture, {}, queries, results, isa); });
+    expect_refusal("sample", [&] { edgewise::sample(texture, {{}, isa}, queries, results); });
     expect_refusal("force_isa", [&] { force_isa(isa); });
     expect_refusal("parse_supported_isa", [&] { parse_supported_isa(name_of(isa)); });
   }

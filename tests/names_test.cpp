@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "edgewise/edgewise.hpp"
+#include "src/clip.hpp"
 
 namespace edgewise {
 namespace {

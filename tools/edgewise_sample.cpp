@@ -117,8 +117,8 @@ int run(std::span<char* const> args) {
   double sampling_seconds = 0.0;
   for (std::size_t n; (n = queries.read(chunk)) > 0;) {
     const auto sample_start = Clock::now();
-    sample(loaded.texture, settings.sampler, std::span(chunk).first(n), std::span(colours).first(n),
-           isa);
+    sample(loaded.texture, {settings.sampler, isa}, std::span(chunk).first(n),
+           std::span(colours).first(n));
     sampling_seconds += seconds_since(sample_start);
     results.write(std::span(colours).first(n));
     total += n;

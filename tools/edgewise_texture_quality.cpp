@@ -103,8 +103,9 @@ std::vector<ScoreRow> score_scene(const SceneRun& scene, const Texture& texture,
   std::vector<ScoreRow> rows;
   for (Isa isa : isas) {
     for (const FilterMethod& method : methods) {
-      const double seconds = median_seconds(
-          repetitions, [&] { sample(texture, method.options, scene.queries, colours, isa); });
+      const double seconds = median_seconds(repetitions, [&] {
+        sample(texture, {method.options, isa}, scene.queries, colours);
+      });
       rows.push_back(scene.score(method.name, name_of(isa), colours, seconds));
     }
     if (drawn == nullptr) continue;

@@ -23,7 +23,7 @@
 
 #include <xsimd/xsimd.hpp>
 
-#include "edgewise/interpolation.hpp"
+#include "../src/screen_triangle.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "edgewise/clip.hpp"
+#include "../src/clip.hpp"
 
 namespace edgewise::reference {
 

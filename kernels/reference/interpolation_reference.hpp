@@ -20,7 +20,7 @@
 // - A w outside [kMinClipW, kMaxClipW] (or NaN) makes the triangle affine: every w taken as 1.
 #pragma once
 
-#include "edgewise/interpolation.hpp"
+#include "../src/screen_triangle.hpp"
 
 namespace edgewise::reference {
 

@@ -1,4 +1,4 @@
-#include "edgewise/clip.hpp"
+#include "clip.hpp"
 
 #include <cmath>
 #include <stdexcept>

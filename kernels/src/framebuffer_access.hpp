@@ -24,6 +24,9 @@ inline float tile_depth_bound(const float* tile) {
 struct FramebufferAccess {
   static std::uint32_t* color(Framebuffer& f) { return f.color_.data(); }
   static float* depth(Framebuffer& f) { return f.depth_.data(); }
+  static std::size_t index(const Framebuffer& f, std::int32_t x, std::int32_t y) {
+    return f.index(x, y);
+  }
 
   // The bounds, rebuilt from the depth values when something wrote depth around draw().
   static float* tile_max_depth(Framebuffer& f) {

@@ -3,6 +3,7 @@
 #include <string_view>
 
 #include "edgewise/edgewise.hpp"
+#include "clip.hpp"
 
 namespace edgewise {
 

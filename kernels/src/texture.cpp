@@ -21,7 +21,7 @@ namespace {
 constexpr std::int32_t kMaxTextureSize = 1 << 15;
 // Every level starts on the storage's own alignment.
 constexpr std::size_t kLevelAlignment = 64;
-static_assert(static_cast<std::size_t>(TileAlignedAllocator<std::byte>::kAlignment) ==
+static_assert(static_cast<std::size_t>(detail::TileAlignedAllocator<std::byte>::kAlignment) ==
               kLevelAlignment);
 
 std::size_t texel_bytes(TexelFormat format) {

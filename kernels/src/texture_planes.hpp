@@ -18,7 +18,7 @@
 
 #include <cstdint>
 
-#include "edgewise/interpolation.hpp"
+#include "screen_triangle.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/vector.hpp"

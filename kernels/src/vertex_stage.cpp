@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "draw_stages.hpp"
-#include "edgewise/clip.hpp"
+#include "clip.hpp"
 
 namespace edgewise::detail {
 namespace {

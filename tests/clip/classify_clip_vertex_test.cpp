@@ -7,7 +7,7 @@
 #include <cstring>
 #include <limits>
 
-#include "edgewise/clip.hpp"
+#include "src/clip.hpp"
 #include "random.hpp"
 
 namespace edgewise::test {

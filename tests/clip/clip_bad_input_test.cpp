@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "edgewise/clip.hpp"
+#include "src/clip.hpp"
 #include "edgewise/coverage.hpp"
 #include "reference/clip_reference.hpp"
 

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "edgewise/camera.hpp"
-#include "edgewise/clip.hpp"
+#include "src/clip.hpp"
 #include "random.hpp"
 #include "reference/clip_reference.hpp"
 

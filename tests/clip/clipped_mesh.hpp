@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "edgewise/camera.hpp"
-#include "edgewise/clip.hpp"
+#include "src/clip.hpp"
 
 namespace edgewise::test {
 

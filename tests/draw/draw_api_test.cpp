@@ -9,6 +9,7 @@
 
 #include "edgewise/draw.hpp"
 #include "isa_params.hpp"
+#include "src/framebuffer_access.hpp"
 
 namespace edgewise::test {
 namespace {
@@ -260,12 +261,12 @@ TEST(Framebuffer, TiledLayoutRoundTrips) {
   Framebuffer target(13, 9);
   EXPECT_EQ(target.tiles_x(), 2);
   EXPECT_EQ(target.tiles_y(), 2);
-  EXPECT_EQ(target.index(0, 0), 0u);
-  EXPECT_EQ(target.index(7, 7), 63u);
-  EXPECT_EQ(target.index(8, 0), 64u);
-  EXPECT_EQ(target.index(0, 8), 128u);
-  EXPECT_EQ(target.index(12, 8), 3u * 64 + 4);
-  target.color_tiles()[target.index(12, 8)] = 0x04030201;
+  EXPECT_EQ(detail::FramebufferAccess::index(target, 0, 0), 0u);
+  EXPECT_EQ(detail::FramebufferAccess::index(target, 7, 7), 63u);
+  EXPECT_EQ(detail::FramebufferAccess::index(target, 8, 0), 64u);
+  EXPECT_EQ(detail::FramebufferAccess::index(target, 0, 8), 128u);
+  EXPECT_EQ(detail::FramebufferAccess::index(target, 12, 8), 3u * 64 + 4);
+  target.color_tiles()[detail::FramebufferAccess::index(target, 12, 8)] = 0x04030201;
   std::vector<std::uint8_t> rgba(13 * 9 * 4);
   target.read_rgba8(rgba);
   const std::size_t p = (8 * 13 + 12) * 4;

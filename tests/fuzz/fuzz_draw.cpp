@@ -76,7 +76,8 @@
 #include <string>
 #include <vector>
 
-#include "edgewise/clip.hpp"
+#include "src/clip.hpp"
+#include "src/framebuffer_access.hpp"
 #include "edgewise/edgewise.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/sample.hpp"
@@ -935,7 +936,7 @@ void check_draw(const Case& c, std::span<const Output> outputs, std::span<const 
   const CoverageMap coverage(c, pieces);
   for (std::int32_t y = 0; y < ref.target.tiles_y() * 8; ++y) {
     for (std::int32_t x = 0; x < ref.target.tiles_x() * 8; ++x) {
-      const std::size_t i = ref.target.index(x, y);
+      const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y);
       const bool inside = x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
       const bool covered = inside && coverage.at(x, y) != 0;
       const std::uint32_t ref_depth = std::bit_cast<std::uint32_t>(ref.target.depth_tiles()[i]);
@@ -977,7 +978,7 @@ void check_colours(const Case& c, std::span<const Output> outputs, std::span<con
       const std::uint64_t writers = coverage.at(x, y);
       if (writers == 0) continue;  // check_draw: unchanged
       ++stats.pixels;
-      const std::size_t i = ref.target.index(x, y);
+      const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y);
       const std::uint32_t expected = ref.target.color_tiles()[i];
       for (const Output& o : outputs) {
         const std::uint32_t actual = o.target.color_tiles()[i];
@@ -1075,7 +1076,7 @@ void check_textured_colours(const Case& c, const test::TexturedPixelCheck& check
       const std::uint64_t writers = coverage.at(x, y);
       if (writers == 0) continue;  // check_draw: unchanged
       ++stats.textured_pixels;
-      const std::size_t i = ref.target.index(x, y);
+      const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y);
       const std::uint32_t expected = ref.target.color_tiles()[i];
       if (std::all_of(outputs.begin(), outputs.end(),
                       [&](const Output& o) { return o.target.color_tiles()[i] == expected; })) {

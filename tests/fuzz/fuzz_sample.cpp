@@ -339,7 +339,7 @@ std::vector<Output> sample_every_isa(const Case& c, const Texture& texture,
   for (Isa isa : supported_isas()) {  // the reference first
     Output out{isa, false, {}, std::vector<Vec4>(c.queries.size())};
     try {
-      sample(texture, c.options, c.queries, out.results, isa);
+      sample(texture, {c.options, isa}, c.queries, out.results);
     } catch (const std::invalid_argument& e) {
       out.threw = true;
       out.error = e.what();

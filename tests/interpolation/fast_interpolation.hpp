@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "edgewise/interpolation.hpp"
+#include "src/screen_triangle.hpp"
 #include "edgewise/isa.hpp"
 
 namespace edgewise::test {

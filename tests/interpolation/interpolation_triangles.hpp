@@ -5,7 +5,7 @@
 #include <span>
 #include <string_view>
 
-#include "edgewise/interpolation.hpp"
+#include "src/screen_triangle.hpp"
 #include "random.hpp"
 
 namespace edgewise::test {

@@ -160,7 +160,7 @@ TEST_P(SampleDifferential, EveryFilterWithinItsBoundOfTheReference) {
         // Not a multiple of any lane count: the last batch is partial.
         const std::vector<TextureQuery> queries = random_queries(random, t.texture, 203);
         std::vector<Vec4> fast(queries.size());
-        sample(t.texture, options, queries, fast, isa());
+        sample(t.texture, {options, isa()}, queries, fast);
         for (std::size_t i = 0; i < queries.size(); ++i) {
           const TextureQuery& q = queries[i];
           const float got[4] = {fast[i].x, fast[i].y, fast[i].z, fast[i].w};
@@ -217,7 +217,7 @@ TEST_P(SampleDifferential, BadQueriesGiveTheirDefinedResults) {
     SamplerOptions options;
     options.filter = c.filter;
     std::vector<Vec4> out(queries.size());
-    sample(t.texture, options, queries, out, isa());
+    sample(t.texture, {options, isa()}, queries, out);
     for (int i = 0; i < 2; ++i) {
       EXPECT_EQ(out[i].x, 0.0f);
       EXPECT_EQ(out[i].w, 0.0f);

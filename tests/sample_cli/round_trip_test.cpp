@@ -67,7 +67,7 @@ std::vector<Vec4> library_sample(const Texture& texture, const SamplerOptions& o
                                  const std::vector<TextureQuery>& queries,
                                  std::optional<Isa> isa = std::nullopt) {
   std::vector<Vec4> out(queries.size());
-  sample(texture, options, queries, out, isa);
+  sample(texture, {options, isa}, queries, out);
   return out;
 }
 

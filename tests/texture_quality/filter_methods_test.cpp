@@ -123,7 +123,7 @@ TEST(FilterMethods, ReadsLevelOfDetailAgreesWithTheSampler) {
   const TextureQuery query{0.3f, 0.6f, 3.0f / kSide, 3.0f / kSide, -5.0f / kSide, 5.0f / kSide};
   const auto result = [&](const SamplerOptions& options) {
     Vec4 out;
-    sample(texture, options, std::span(&query, 1), std::span(&out, 1), Isa::reference);
+    sample(texture, {options, Isa::reference}, std::span(&query, 1), std::span(&out, 1));
     return out;
   };
   for (int f = 0; f <= static_cast<int>(TextureFilter::ewa); ++f) {

@@ -59,7 +59,7 @@ struct ScreenVertex {
 };
 
 // sx = (x/w + 1) / 2 * width, sy = (1 - y/w) / 2 * height, z = z/w, inv_w = 1/w.
-// For a clip-space position with w > 0 (clip.hpp's output has it).
+// For a clip-space position with w > 0 (draw()'s clipping guarantees it).
 ScreenVertex to_screen(const Vec4& clip, const Viewport& viewport);
 
 }  // namespace edgewise

@@ -1,8 +1,9 @@
 // Drawing shaded, depth-tested triangle meshes into a Framebuffer.
 //
 // The pipeline: vertices are transformed to clip space (camera.hpp), triangles are clipped
-// (clip.hpp) and mapped to the screen, snapped to 1/256 px like every coverage decision, culled
-// by winding, rasterized with the exact coverage of coverage.hpp, depth-tested, shaded, written.
+// (docs/DESIGN.md, "Clipping") and mapped to the screen, snapped to 1/256 px like every coverage
+// decision, culled by winding, rasterized with the exact coverage of coverage.hpp, depth-tested,
+// shaded, written.
 //
 // Depth is z/w, interpolated linearly in screen space in float32 by one fixed formula (see
 // kernels/src/depth_plane.hpp), so depth-test outcomes are identical on every ISA and in the

@@ -2,7 +2,6 @@
 #pragma once
 
 #include "edgewise/camera.hpp"
-#include "edgewise/clip.hpp"
 #include "edgewise/framebuffer.hpp"
 #include "edgewise/interpolation.hpp"
 #include "edgewise/isa.hpp"

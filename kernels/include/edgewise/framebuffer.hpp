@@ -26,7 +26,6 @@ namespace edgewise {
 
 namespace detail {
 struct FramebufferAccess;
-}
 
 // Storage aligned to 64 bytes, so that every tile row is one aligned SIMD load on every ISA.
 template <class T>
@@ -40,6 +39,7 @@ struct TileAlignedAllocator {
   void deallocate(T* p, std::size_t) { ::operator delete(p, kAlignment); }
   friend bool operator==(const TileAlignedAllocator&, const TileAlignedAllocator&) { return true; }
 };
+}  // namespace detail
 
 class Framebuffer {
  public:
@@ -73,6 +73,8 @@ class Framebuffer {
   const std::uint32_t* color_tiles() const { return color_.data(); }
   const float* depth_tiles() const { return depth_.data(); }
 
+ private:
+  // Where pixel (x, y) is in the tiled storage (the layout above).
   std::size_t index(std::int32_t x, std::int32_t y) const {
     return (static_cast<std::size_t>(y >> 3) * static_cast<std::size_t>(tiles_x_) +
             static_cast<std::size_t>(x >> 3)) *
@@ -80,11 +82,10 @@ class Framebuffer {
            static_cast<std::size_t>((y & 7) * 8 + (x & 7));
   }
 
- private:
   std::int32_t width_, height_, tiles_x_, tiles_y_;
   friend struct detail::FramebufferAccess;
-  std::vector<std::uint32_t, TileAlignedAllocator<std::uint32_t>> color_;
-  std::vector<float, TileAlignedAllocator<float>> depth_;
+  std::vector<std::uint32_t, detail::TileAlignedAllocator<std::uint32_t>> color_;
+  std::vector<float, detail::TileAlignedAllocator<float>> depth_;
   // For each tile, an upper bound on its depth values (when depth_bounds_valid_).
   std::vector<float> tile_max_depth_;
   bool depth_bounds_valid_ = true;

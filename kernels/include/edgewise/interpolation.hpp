@@ -39,21 +39,6 @@ enum class Perspective : std::uint8_t {
   affine,   // screen-space weights used as they are (exact only when w is constant)
 };
 
-// Clip-space w the interpolators accept. Clipping keeps w in this range for any camera whose
-// near and far planes are within it; a triangle with any other w (zero, negative, NaN, inf) is
-// interpolated affinely, as if every w were 1, so results stay finite.
-inline constexpr double kMinClipW = 0x1.0p-32;
-inline constexpr double kMaxClipW = 0x1.0p+32;
-
-// A triangle as the interpolators take it: snapped screen positions in pixels (docs/DESIGN.md,
-// "Coordinates and snapping") and each vertex's clip-space w. w = 1 at all three vertices means
-// no perspective.
-struct ScreenTriangle {
-  double x[3];
-  double y[3];
-  double w[3];
-};
-
 // Names of the values (names.hpp).
 std::string_view name_of(InterpolationMethod value);
 template <>

@@ -100,13 +100,23 @@ struct TextureQuery {
   float s, t, dsdx, dtdx, dsdy, dtdy;
 };
 
+// What sample() is asked for: the filter, and the ISA that runs it, as RasterOptions and
+// DrawOptions choose theirs. A SamplerOptions converts to it with the default ISA.
+struct SampleOptions {
+  SamplerOptions sampler;
+  std::optional<Isa> isa;  // default: active_isa(); Isa::reference runs the scalar
+                           // double-precision reference
+
+  SampleOptions() = default;
+  SampleOptions(const SamplerOptions& sampler_options, std::optional<Isa> chosen = std::nullopt)
+      : sampler(sampler_options), isa(chosen) {}
+};
+
 // out[i] = the filtered linear RGBA at queries[i]. Throws std::invalid_argument when the spans'
-// sizes differ, an option is out of range, or the filter needs ripmaps or a summed-area table the
-// texture was built without. `isa` picks the kernel (default: active_isa()); Isa::reference runs
-// the scalar double-precision reference.
-void sample(const Texture& texture, const SamplerOptions& options,
-            std::span<const TextureQuery> queries, std::span<Vec4> out,
-            std::optional<Isa> isa = std::nullopt);
+// sizes differ, an option is out of range, the ISA is not supported (isa.hpp), or the filter
+// needs ripmaps or a summed-area table the texture was built without.
+void sample(const Texture& texture, const SampleOptions& options,
+            std::span<const TextureQuery> queries, std::span<Vec4> out);
 
 // Names of the values (names.hpp).
 std::string_view name_of(TextureFilter value);

@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "edgewise/framebuffer.hpp"  // TileAlignedAllocator
+#include "edgewise/framebuffer.hpp"  // detail::TileAlignedAllocator
 #include "edgewise/names.hpp"
 
 namespace edgewise {
@@ -115,7 +115,7 @@ class Texture {
   std::vector<TextureLevel> ripmaps_;
   std::size_t ripmap_columns_ = 0;
   SummedAreaTable sat_;
-  std::vector<std::byte, TileAlignedAllocator<std::byte>> storage_;
+  std::vector<std::byte, detail::TileAlignedAllocator<std::byte>> storage_;
 
   friend class TextureBuilder;  // kernels/src: fills a Texture from level 0
 };
