@@ -1,7 +1,7 @@
 // Every ISA's texture filters against the double-precision reference, on random textures (8-bit
 // linear and sRGB, float with values outside [0, 1], odd and one-texel-wide sizes) and random
 // queries from deep magnification to extreme anisotropy, far-out coordinates and bad input,
-// within the per-query bounds of texture/sample_bounds.hpp.
+// within the per-query bounds of tests/sample/sample_bounds.hpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
