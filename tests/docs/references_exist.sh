@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Every file the documentation names exists, and every section of docs/DESIGN.md the code cites
+# is a heading there, so that from a document or a comment the next file is one hop away.
+#
+#   references_exist.sh REPOSITORY_ROOT
+#
+# A file reference is a `backticked` path in README.md, docs/*.md or bench/**/README.md that
+# ends in a source, script or document extension. It resolves as a path from the repository
+# root or the document's folder, as an include path (`edgewise/draw.hpp`), or as the tail of
+# exactly one source file's path (`draw.cpp` beside a full path in the same sentence is read
+# the way the sentence means it; a tail two files share is ambiguous and fails). A section citation is `docs/DESIGN.md, "Heading"` in any source
+# file of kernels/, tests/, bench/, tools/ or testing/.
+set -euo pipefail
+
+root=$1
+cd "$root"
+failures=0
+fail() {
+  echo "FAIL: $*" >&2
+  failures=$((failures + 1))
+}
+
+# The tracked sources: every file outside the build directories.
+sources=$(find kernels tests bench tools testing docs cmake -type f | sort)
+documents=(README.md docs/*.md bench/README.md bench/results/README.md)
+for document in "${documents[@]}"; do
+  folder=$(dirname "$document")
+  while read -r path; do
+    [[ -e $path || -e $folder/$path || -e kernels/include/$path ]] && continue
+    matches=$(grep -cE "(^|/)${path//./\\.}\$" <<<"$sources" || true)
+    ((matches == 1)) || fail "$document names \`$path\`: $matches files match"
+  done < <(grep -oE '`[A-Za-z0-9_./-]+\.(hpp|cpp|cmake|sh|py|md|txt)`' "$document" | tr -d '`' |
+    sort -u)
+done
+
+headings=$(grep -E '^##+ ' docs/DESIGN.md | sed -E 's/^#+ //')
+while IFS= read -r citation; do
+  section=${citation#*\"}
+  section=${section%\"}
+  grep -qxF "$section" <<<"$headings" || fail "code cites docs/DESIGN.md section \"$section\", which is not a heading"
+done < <(grep -rhoE --exclude=references_exist.sh 'docs/DESIGN\.md, "[^"]+"' kernels tests bench tools \
+  testing | sort -u)
+
+if ((failures > 0)); then
+  echo "$failures broken references" >&2
+  exit 1
+fi
+echo "every referenced file and cited section exists"
