@@ -10,6 +10,7 @@
 # exactly one source file's path (`draw.cpp` beside a full path in the same sentence is read
 # the way the sentence means it; a tail two files share is ambiguous and fails). A section citation is `docs/DESIGN.md, "Heading"` in any source
 # file of kernels/, tests/, bench/, tools/ or testing/.
+# shellcheck disable=SC2016 # the backticks are Markdown's, matched literally
 set -euo pipefail
 
 root=$1
