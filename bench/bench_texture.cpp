@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "benchmarks.hpp"
+#include "texture_scene/builtin_views.hpp"
 #include "texture_scene/ground_truth_cache.hpp"
 #include "texture_scene/image_metrics.hpp"
 #include "texture_scene/procedural_textures.hpp"
@@ -24,6 +26,26 @@ const Texture& checkerboard_texture() {
                                TextureBuild{PyramidFilter::box, true, true});
   }();
   return texture;
+}
+
+const texture_scene::TextureView& ground_plane() {
+  static const texture_scene::TextureView view = texture_scene::ground_plane_view(kWidth, kHeight);
+  return view;
+}
+
+const texture_scene::ViewMesh& ground_plane_mesh() {
+  static const texture_scene::ViewMesh mesh = texture_scene::view_mesh(ground_plane());
+  return mesh;
+}
+
+DrawOptions ground_plane_options(Isa isa, TextureFilter filter, TextureDerivatives derivatives) {
+  DrawOptions options;
+  options.transform = ground_plane_mesh().transform;
+  options.shading = Shading::flat;
+  options.isa = isa;
+  options.texture = DrawTexture{&checkerboard_texture(), {}, derivatives};
+  options.texture->sampler.filter = filter;
+  return options;
 }
 
 namespace {

@@ -1,6 +1,6 @@
 // The texture the sampling and textured-drawing benchmarks share: a 1024 x 1024 RGBA8
 // checkerboard of 64 x 64 squares, linear, with box mipmaps, ripmaps and a summed-area table
-// (so that every filter runs on it).
+// (so that every filter runs on it); and the ground-plane view drawn as geometry.
 #pragma once
 
 #include <cstdint>
@@ -9,10 +9,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include "edgewise/draw.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
 #include "texture_scene/linear_image.hpp"
 #include "texture_scene/texture_view.hpp"
+#include "texture_scene/view_mesh.hpp"
 
 namespace edgewise::bench {
 
@@ -21,6 +23,17 @@ inline constexpr std::int32_t kSquares = 64;
 
 const texture_scene::LinearImage& checkerboard();
 const Texture& checkerboard_texture();
+
+// texture_scene's ground-plane view at kWidth x kHeight, and the two triangles that draw it
+// (texture_scene::view_mesh()), built once.
+const texture_scene::TextureView& ground_plane();
+const texture_scene::ViewMesh& ground_plane_mesh();
+// How TexturedDraw/ draws that mesh: the checkerboard through `filter` and `derivatives`, white
+// flat shading, depth test less with writes, into a target cleared to kGroundPlaneClearColor
+// and depth 1.
+DrawOptions ground_plane_options(Isa isa, TextureFilter filter, TextureDerivatives derivatives);
+inline constexpr Vec4 kGroundPlaneClearColor{0.0f, 0.0f, 0.0f, 0.0f};
+inline constexpr float kGroundPlaneClearDepth = 1.0f;
 
 // Error beside speed: when edgewise-texture-quality has stored the ground truth of the
 // checkerboard seen through `view` (named `view_name`, its file in the default cache directory;

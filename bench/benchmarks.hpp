@@ -23,4 +23,8 @@ void register_sample_benchmarks();
 // TexturedDraw/<isa>/<filter>/<derivatives>: the ground-plane view drawn textured.
 void register_textured_draw_benchmarks();
 
+// DrawPeer/llvmpipe/<threads:1|threads:default>/<workload>: Mesa's llvmpipe drawing the Shading/
+// workloads and the trilinear TexturedDraw/ one, when built with EGL and OpenGL.
+void register_draw_peer_benchmarks();
+
 }  // namespace edgewise::bench

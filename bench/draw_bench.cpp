@@ -15,18 +15,15 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
-#include <map>
 #include <initializer_list>
-#include <random>
 #include <span>
 #include <string>
 #include <string_view>
-#include <tuple>
 #include <vector>
 
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
-#include "exact_area_triangles.hpp"
+#include "shading_scene.hpp"
 #include "src/draw_stages.hpp"
 
 namespace edgewise::bench {
@@ -34,13 +31,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0003;
-
-struct ShadingCase {
-  int area;               // px^2 per triangle
-  std::size_t triangles;  // per draw() call
-};
-constexpr ShadingCase kCases[] = {{8, 200'000}, {64, 100'000}, {1000, 20'000}, {200'000, 200}};
 // The interpolation methods differ per fragment: compared where fragments dominate (1000 px) and
 // where per-triangle setup still shows (64 px).
 constexpr int kMethodAreas[] = {64, 1000};
@@ -53,66 +43,10 @@ constexpr double kMethodMinTimeSeconds = 0.2;
 // 1000 or 200000 px set would take 1-2 s per call. It draws the first 1/16 of each set instead.
 constexpr std::size_t kReferenceShare = 16;
 
-// View-space distances of the vertices, inside the cameras' near and far planes. Triangles are
-// never clipped (the benchmark checks it).
-constexpr float kNear = 1.0f, kFar = 100.0f;
-constexpr double kMinDistance = 2.0, kMaxDistance = 50.0;
-constexpr float kFovy = 1.0f;  // radians, for the perspective camera
-
-// Clear colour with alpha 0: every written pixel has alpha 255 (vertex alphas are 1), so the
-// pixels written can be counted after the timed loop.
-constexpr Vec4 kClearColor{0.1f, 0.2f, 0.3f, 0.0f};
-constexpr float kClearDepth = 1.0f;
-
 // With random placement the expected number of covered samples equals the area, so a set covers
 // about area * triangles samples; a result far from that means the benchmark measures something
 // else (culled or clipped triangles, a broken kernel).
 constexpr double kFragmentCountTolerance = 0.05;
-
-enum class Camera { orthographic, perspective };
-
-struct Scene {
-  std::vector<Vec3> positions;  // three per triangle
-  std::vector<Vec4> colors;
-};
-
-// A view-space point that `camera` maps to screen pixel (sx, sy) at distance `distance`.
-Vec3 unproject(Camera camera, double sx, double sy, double distance) {
-  if (camera == Camera::orthographic) return {float(sx), float(sy), float(-distance)};
-  // Inverse of perspective() and to_screen(): NDC times distance over the focal scale.
-  const double focal = 1.0 / std::tan(0.5 * double(kFovy));
-  const double aspect = double(kWidth) / double(kHeight);
-  const double ndc_x = 2.0 * sx / kWidth - 1.0, ndc_y = 1.0 - 2.0 * sy / kHeight;
-  return {float(ndc_x * distance * aspect / focal), float(ndc_y * distance / focal),
-          float(-distance)};
-}
-
-Mat4 camera_transform(Camera camera) {
-  if (camera == Camera::orthographic) {
-    // x, y in pixels with y down; z in view space gives depth.
-    return orthographic(0.0f, float(kWidth), float(kHeight), 0.0f, kNear, kFar);
-  }
-  return perspective(kFovy, float(kWidth) / float(kHeight), kNear, kFar);
-}
-
-const Scene& scene(Camera camera, const ShadingCase& c) {
-  static std::map<std::tuple<Camera, int>, Scene> cache;
-  auto [it, inserted] = cache.try_emplace({camera, c.area});
-  if (!inserted) return it->second;
-  Scene& s = it->second;
-  const std::vector<Vec2> pixels =
-      workload::exact_area_triangles(c.triangles, c.area, kWidth, kHeight, kSeed);
-  std::mt19937_64 rng(kSeed + static_cast<std::uint64_t>(c.area));
-  std::uniform_real_distribution<double> distance(kMinDistance, kMaxDistance);
-  std::uniform_real_distribution<float> channel(0.0f, 1.0f);
-  s.positions.reserve(pixels.size());
-  s.colors.reserve(pixels.size());
-  for (const Vec2& p : pixels) {
-    s.positions.push_back(unproject(camera, p.x, p.y, distance(rng)));
-    s.colors.push_back({channel(rng), channel(rng), channel(rng), 1.0f});
-  }
-  return s;
-}
 
 std::size_t triangles_for(Isa isa, const ShadingCase& c) {
   return isa == Isa::reference ? (c.triangles + kReferenceShare - 1) / kReferenceShare
@@ -150,7 +84,7 @@ std::string check(const DrawReport& report, Isa isa, std::size_t triangles, int 
 
 void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
                 const DrawOptions& options) {
-  const Scene& s = scene(camera, c);
+  const ShadingScene& s = shading_scene(camera, c);
   const std::size_t triangles = triangles_for(isa, c);
   DrawMesh mesh;
   mesh.positions = std::span(s.positions).first(3 * triangles);
@@ -161,7 +95,7 @@ void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
   double vertex_seconds = 0.0, raster_seconds = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
-    target.clear(kClearColor, kClearDepth);
+    target.clear(kShadingClearColor, kShadingClearDepth);
     state.ResumeTiming();
     // draw(), stage by stage (kernels/src/draw_stages.hpp), to time its vertex stage apart.
     detail::DrawCall call = detail::prepare_draw(target, mesh, options);
@@ -196,30 +130,20 @@ void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
                                        : 0.0;
 }
 
-DrawOptions options_for(Isa isa, Camera camera) {
-  DrawOptions options;
-  options.transform = camera_transform(camera);
-  options.depth_test = DepthTest::less;
-  options.depth_write = true;
-  options.shading = Shading::gouraud;
-  options.isa = isa;
-  return options;
-}
-
 void shading(benchmark::State& state, Isa isa, ShadingCase c) {
-  draw_scene(state, isa, Camera::orthographic, c, options_for(isa, Camera::orthographic));
+  draw_scene(state, isa, Camera::orthographic, c, shading_options(isa, Camera::orthographic));
 }
 
 // The same workload without hierarchical depth: what skipping hidden tiles is worth.
 void shading_without_tile_depth(benchmark::State& state, Isa isa, ShadingCase c) {
-  DrawOptions options = options_for(isa, Camera::orthographic);
+  DrawOptions options = shading_options(isa, Camera::orthographic);
   options.hierarchical_depth = false;
   draw_scene(state, isa, Camera::orthographic, c, options);
 }
 
 void shading_method(benchmark::State& state, Isa isa, ShadingCase c, InterpolationMethod method,
                     Perspective perspective) {
-  DrawOptions options = options_for(isa, Camera::perspective);
+  DrawOptions options = shading_options(isa, Camera::perspective);
   options.interpolation = method;
   options.perspective = perspective;
   draw_scene(state, isa, Camera::perspective, c, options);
@@ -243,14 +167,14 @@ std::string area_label(const ShadingCase& c) {
 
 void register_draw_benchmarks() {
   for (Isa isa : supported_isas()) {
-    for (const ShadingCase& c : kCases) {
+    for (const ShadingCase& c : kShadingCases) {
       const std::string name = joined({"Shading", name_of(isa), area_label(c)});
       benchmark::RegisterBenchmark(name.c_str(), shading, isa, c)->Unit(benchmark::kMicrosecond);
     }
   }
   for (Isa isa : supported_isas()) {
     if (isa == Isa::reference) continue;  // the reference never skips tiles
-    for (const ShadingCase& c : kCases) {
+    for (const ShadingCase& c : kShadingCases) {
       const std::string name = joined({"ShadingWithoutTileDepth", name_of(isa), area_label(c)});
       benchmark::RegisterBenchmark(name.c_str(), shading_without_tile_depth, isa, c)
           ->Unit(benchmark::kMicrosecond);
@@ -259,7 +183,7 @@ void register_draw_benchmarks() {
   for (Isa isa : supported_isas()) {
     for (InterpolationMethod method : kInterpolationMethods) {
       for (Perspective perspective : {Perspective::correct, Perspective::affine}) {
-        for (const ShadingCase& c : kCases) {
+        for (const ShadingCase& c : kShadingCases) {
           if (std::find(std::begin(kMethodAreas), std::end(kMethodAreas), c.area) ==
               std::end(kMethodAreas)) {
             continue;

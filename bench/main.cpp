@@ -2,17 +2,30 @@
 #include <benchmark/benchmark.h>
 
 #include <string>
+#include <string_view>
 
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
+#if defined(EDGEWISE_BENCH_LLVMPIPE)
+#include "llvmpipe_peer.hpp"
+#include "peer_process.hpp"
+#endif
 
 int main(int argc, char** argv) {
+#if defined(EDGEWISE_BENCH_LLVMPIPE)
+  // The binary started again as a DrawPeer/ benchmark's llvmpipe process (draw_peer_bench.cpp).
+  if (argc == 2 && std::string_view(argv[1]) == edgewise::bench::kPeerChildFlag)
+    return edgewise::bench::serve_llvmpipe_peer(edgewise::bench::kPeerChildFd);
+#endif
   edgewise::bench::register_coverage_benchmarks();
   edgewise::bench::register_clip_benchmarks();
   edgewise::bench::register_draw_benchmarks();
 #if defined(EDGEWISE_BENCH_SAMPLING)
   edgewise::bench::register_sample_benchmarks();
   edgewise::bench::register_textured_draw_benchmarks();
+#endif
+#if defined(EDGEWISE_BENCH_LLVMPIPE)
+  edgewise::bench::register_draw_peer_benchmarks();
 #endif
 
   std::string supported;

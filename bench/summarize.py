@@ -11,7 +11,9 @@ the scalar reference, and the comparison with published peer figures and with th
 - Sample/*, SamplePeer/*: texture samples/s per filter, ISA and query stream, beside
   OpenImageIO's TextureSystem, against the sampling targets (AVX2, one core, ground plane);
 - TexturedDraw/*: textured pixels/s of draw() on the same ground-plane view per filter, ISA and
-  derivative method, beside sample()'s rate on the view's queries.
+  derivative method, beside sample()'s rate on the view's queries;
+- DrawPeer/*: Mesa's llvmpipe on the Shading/ workloads and the trilinear TexturedDraw/ one, one
+  thread and its default threads, beside edgewise (the widest ISA measured): edgewise / llvmpipe.
 
 Usage: /usr/bin/python3 bench/summarize.py FILE.json [FILE.json ...]
   e.g. bench/results/<cpu-model>/coverage.json bench/results/<cpu-model>/shading.json
@@ -56,6 +58,17 @@ SAMPLE_NAME = re.compile(r"^Sample/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<s
 DRAW_NAME = re.compile(
     r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<derivatives>[a-z]+)$")
 PEER_NAME = re.compile(r"^SamplePeer/oiio/(?P<mode>[a-z0-9_]+)/(?P<stream>[a-z_]+)$")
+DRAW_PEER_NAME = re.compile(r"^DrawPeer/(?P<peer>[a-z0-9_]+)/threads:(?P<threads>[a-z0-9]+)/"
+                            r"(?P<workload>.+?)(/manual_time)?$")
+# The drawing peer's workloads: the edgewise benchmark each repeats (bench/draw_peer_workloads.hpp)
+# and the rate compared, as the shading targets count it.
+DRAW_PEER_WORKLOADS = {
+    "area:8": ("Shading", 8, "triangles", "tri/s"),
+    "area:64": ("Shading", 64, "triangles", "tri/s"),
+    "area:1000": ("Shading", 1000, "fragments", "frag/s"),
+    "area:200000": ("Shading", 200000, "fragments", "frag/s"),
+    "ground_plane/trilinear": ("TexturedDraw", "trilinear", "items_per_second", "px/s"),
+}
 ISA_ORDER = ["reference", "sse2", "sse4_1", "avx2", "neon"]
 METHOD_ORDER = ["nearest_vertex", "inverse_distance", "subtriangle_areas", "edge_functions",
                 "scanline", "plane_equations"]
@@ -63,8 +76,8 @@ METHOD_ORDER = ["nearest_vertex", "inverse_distance", "subtriangle_areas", "edge
 
 def medians(benchmarks):
     """run_name -> entry holding the median (the 'median' aggregate, with the coefficient of
-    variation of its CPU time as 'cv'; or the median of the iterations when the file has no
-    aggregates), or the error it reported."""
+    variation of its time as 'cv': CPU time, or the time a /manual_time benchmark set itself; or
+    the median of the iterations when the file has no aggregates), or the error it reported."""
     by_run = {}
     for entry in benchmarks:
         name = entry.get("run_name", entry["name"])
@@ -75,7 +88,8 @@ def medians(benchmarks):
             if entry.get("aggregate_name") == "median":
                 slot["median"] = entry
             elif entry.get("aggregate_name") == "cv":
-                slot["cv"] = entry.get("cpu_time")
+                manual = name.endswith("/manual_time")  # reported as its real time
+                slot["cv"] = entry.get("real_time" if manual else "cpu_time")
         else:
             slot["runs"].append(entry)
     result = {}
@@ -349,6 +363,55 @@ def print_textured_draw(draws, samples):
           "depth, texture coordinates, derivatives and the colour write")
 
 
+def print_draw_peers(peers, shading, draws):
+    """edgewise against a drawing peer on the same work, per workload and thread setting."""
+    def edgewise_entry(workload, isa):
+        kind, key, _, _ = DRAW_PEER_WORKLOADS[workload]
+        entry = (shading.get((key, isa)) if kind == "Shading"
+                 else draws.get((key, isa, "quad")))
+        return entry if entry and "error" not in entry else None
+
+    workloads = [w for w in DRAW_PEER_WORKLOADS if any(k[1] == w for k in peers)]
+    measured = [isa for isa in ISA_ORDER if isa != "reference" and
+                any(edgewise_entry(w, isa) for w in workloads)]
+    isa = measured[-1] if measured else None
+    for peer in sorted({k[0] for k in peers}):
+        print(f"drawing peer: {peer} on the same work as edgewise ({isa or 'not measured'}, one "
+              "thread): median rates, and edgewise / peer (> 1: edgewise faster)")
+        header = ["workload", f"edgewise {isa or '-'}", f"{peer} 1 thread", f"{peer} default",
+                  "edgewise / 1 thread", "edgewise / default", "cv 1 / default",
+                  "cpu/wall 1 / default", "written diff"]
+        rows = []
+        for workload in workloads:
+            _, _, counter, unit = DRAW_PEER_WORKLOADS[workload]
+            mine = edgewise_entry(workload, isa) if isa else None
+            row = [workload, si(mine[counter], unit) if mine else "-"]
+            ratios, cvs, utilization = [], [], []
+            difference = "-"
+            for threads in ("1", "default"):
+                entry = peers.get((peer, workload, threads))
+                if entry is None or "error" in entry:
+                    row.append("-" if entry is None else "ERROR: " + entry["error"])
+                    ratios.append("-")
+                    cvs.append("-")
+                    utilization.append("-")
+                else:
+                    row.append(si(entry[counter], unit))
+                    ratios.append(ratio(mine[counter], entry[counter]) if mine else "-")
+                    cvs.append(cv_cell(entry))
+                    utilization.append(f"{entry['cpu_per_wall']:.2f}"
+                                       if "cpu_per_wall" in entry else "-")
+                    difference = f"{entry.get('written_difference', 0):+.0f}"
+            rows.append(row + ratios + [" / ".join(cvs), " / ".join(utilization), difference])
+        print_table(header, rows)
+        print()
+        print(f"{peer} 1 thread: LP_NUM_THREADS=0, timed in the process's CPU time as edgewise is; "
+              "default: its default rasterizer threads (one per CPU), timed in wall-clock time; "
+              "cpu/wall: the process's CPU time over wall-clock time (the CPUs it kept busy; "
+              "below 1 when other work took them); covered samples equal edgewise's, written "
+              "samples differ by 'written diff' per draw (depth rounding at near-ties)")
+
+
 def main(argv):
     if len(argv) < 2:
         print(__doc__.strip(), file=sys.stderr)
@@ -373,18 +436,21 @@ def main(argv):
     samples = collect(results, SAMPLE_NAME, lambda m: (m["filter"], m["stream"], m["isa"]))
     peers = collect(results, PEER_NAME, lambda m: (m["mode"], m["stream"]))
     draws = collect(results, DRAW_NAME, lambda m: (m["filter"], m["isa"], m["derivatives"]))
+    draw_peers = collect(results, DRAW_PEER_NAME,
+                         lambda m: (m["peer"], m["workload"], m["threads"]))
     clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
-    if not (coverage or shading or methods or samples or draws):
-        print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/*, ShadingMethod/*, Sample/* or "
-              "TexturedDraw/* "
-              "benchmarks", file=sys.stderr)
+    if not (coverage or shading or methods or samples or draws or draw_peers):
+        print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/*, ShadingMethod/*, Sample/*, "
+              "TexturedDraw/* or DrawPeer/* benchmarks", file=sys.stderr)
         return 1
 
     for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
                                        (print_shading, shading, (shading, plain_depth)),
                                        (print_methods, methods, (methods,)),
                                        (print_sampling, samples, (samples, peers)),
-                                       (print_textured_draw, draws, (draws, samples))):
+                                       (print_textured_draw, draws, (draws, samples)),
+                                       (print_draw_peers, draw_peers,
+                                        (draw_peers, shading, draws))):
         if found:
             print()
             title_printer(*args)

@@ -21,31 +21,14 @@
 #include "bench_texture.hpp"
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
-#include "texture_scene/builtin_views.hpp"
-#include "texture_scene/view_mesh.hpp"
 
 namespace edgewise::bench {
 namespace {
 
-const texture_scene::TextureView& ground_plane() {
-  static const texture_scene::TextureView view = texture_scene::ground_plane_view(kWidth, kHeight);
-  return view;
-}
-
-const texture_scene::ViewMesh& ground_plane_mesh() {
-  static const texture_scene::ViewMesh mesh = texture_scene::view_mesh(ground_plane());
-  return mesh;
-}
-
 void textured_draw(benchmark::State& state, Isa isa, TextureFilter filter,
                    TextureDerivatives derivatives) {
   const texture_scene::ViewMesh& mesh = ground_plane_mesh();
-  DrawOptions options;
-  options.transform = mesh.transform;
-  options.shading = Shading::flat;
-  options.isa = isa;
-  options.texture = DrawTexture{&checkerboard_texture(), {}, derivatives};
-  options.texture->sampler.filter = filter;
+  DrawOptions options = ground_plane_options(isa, filter, derivatives);
   std::uint64_t pixels = static_cast<std::uint64_t>(kWidth) * kHeight;
   if (isa == Isa::reference) {
     options.scissor = PixelRect{0, 0, kWidth / 2, kHeight / 2};
@@ -54,7 +37,7 @@ void textured_draw(benchmark::State& state, Isa isa, TextureFilter filter,
   Framebuffer target(kWidth, kHeight);
   for (auto _ : state) {
     state.PauseTiming();
-    target.clear({0.0f, 0.0f, 0.0f, 0.0f}, 1.0f);
+    target.clear(kGroundPlaneClearColor, kGroundPlaneClearDepth);
     state.ResumeTiming();
     const DrawReport report = draw(target, mesh.mesh(), options);
     if (report.fragments_passed != pixels) {

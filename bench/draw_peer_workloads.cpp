@@ -1,0 +1,66 @@
+#include "draw_peer_workloads.hpp"
+
+#include <functional>
+#include <map>
+#include <memory>
+
+#include "shading_scene.hpp"
+#if defined(EDGEWISE_BENCH_SAMPLING)
+#include "bench_texture.hpp"
+#endif
+
+namespace edgewise::bench {
+namespace {
+
+constexpr std::string_view kNames[] = {
+    "area:8",
+    "area:64",
+    "area:1000",
+    "area:200000",
+#if defined(EDGEWISE_BENCH_SAMPLING)
+    "ground_plane/trilinear",
+#endif
+};
+
+std::unique_ptr<PeerWorkload> build(std::string_view name) {
+  auto w = std::make_unique<PeerWorkload>();
+  w->name = name;
+  for (const ShadingCase& c : kShadingCases) {
+    if (name != "area:" + std::to_string(c.area)) continue;
+    const ShadingScene& scene = shading_scene(Camera::orthographic, c);
+    w->mesh.positions = scene.positions;
+    w->mesh.colors = scene.colors;
+    w->options = shading_options(active_isa(), Camera::orthographic);
+    w->clear_color = kShadingClearColor;
+    w->clear_depth = kShadingClearDepth;
+    w->triangles = c.triangles;
+    return w;
+  }
+#if defined(EDGEWISE_BENCH_SAMPLING)
+  if (name == "ground_plane/trilinear") {
+    w->mesh = ground_plane_mesh().mesh();
+    w->options =
+        ground_plane_options(active_isa(), TextureFilter::trilinear, TextureDerivatives::quad);
+    w->clear_color = kGroundPlaneClearColor;
+    w->clear_depth = kGroundPlaneClearDepth;
+    w->triangles = w->mesh.positions.size() / 3;
+    return w;
+  }
+#endif
+  return nullptr;
+}
+
+}  // namespace
+
+std::span<const std::string_view> peer_workload_names() {
+  return kNames;
+}
+
+const PeerWorkload* find_peer_workload(std::string_view name) {
+  static std::map<std::string, std::unique_ptr<PeerWorkload>, std::less<>> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) it = cache.emplace(std::string(name), build(name)).first;
+  return it->second.get();
+}
+
+}  // namespace edgewise::bench

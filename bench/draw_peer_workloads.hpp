@@ -1,0 +1,33 @@
+// The workloads DrawPeer/ measures: the draw() calls that Shading/ and TexturedDraw/ time, by
+// name, for a peer renderer to draw from the same vertex arrays with the same settings:
+// - area:<px>: Shading/<isa>/area:<px> (shading_scene.hpp);
+// - ground_plane/trilinear: TexturedDraw/<isa>/trilinear/quad (bench_texture.hpp).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "edgewise/edgewise.hpp"
+
+namespace edgewise::bench {
+
+// One draw() call into a kWidth x kHeight target cleared to clear_color and clear_depth.
+struct PeerWorkload {
+  std::string name;  // the last part of the benchmark's name
+  DrawMesh mesh;     // non-indexed
+  DrawOptions options;
+  Vec4 clear_color;
+  float clear_depth;
+  std::uint64_t triangles;
+};
+
+// Every workload's name, in the order the benchmarks are registered.
+std::span<const std::string_view> peer_workload_names();
+
+// The workload called `name`, built on first use (the same in every process: fixed seeds);
+// nullptr for an unknown name.
+const PeerWorkload* find_peer_workload(std::string_view name);
+
+}  // namespace edgewise::bench

@@ -1,0 +1,419 @@
+#include "llvmpipe_peer.hpp"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/glcorearb.h>
+
+#include <time.h>
+
+#include <chrono>
+#include <span>
+#include <string_view>
+
+#include "benchmarks.hpp"
+
+namespace edgewise::bench {
+namespace {
+
+double process_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
+
+bool has_word(const char* list, std::string_view word) {
+  if (list == nullptr) return false;
+  for (std::string_view rest(list); !rest.empty();) {
+    const std::size_t end = rest.find(' ');
+    if (rest.substr(0, end) == word) return true;
+    if (end == std::string_view::npos) break;
+    rest.remove_prefix(end + 1);
+  }
+  return false;
+}
+
+bool has_gl_extension(std::string_view name) {
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i) {
+    const auto* extension = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+    if (extension != nullptr && name == extension) return true;
+  }
+  return false;
+}
+
+GLenum gl_depth_function(DepthTest test) {
+  switch (test) {
+    case DepthTest::less:
+      return GL_LESS;
+    case DepthTest::less_equal:
+      return GL_LEQUAL;
+    case DepthTest::greater:
+      return GL_GREATER;
+    case DepthTest::always:
+      return GL_ALWAYS;
+    case DepthTest::never:
+      return GL_NEVER;
+  }
+  return GL_LESS;
+}
+
+// Gouraud: the vertex colour, interpolated.
+constexpr const char* kColorVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec4 color;
+uniform mat4 to_clip;
+out vec4 shade;
+void main() {
+  gl_Position = to_clip * vec4(position, 1.0);
+  shade = color;
+}
+)";
+constexpr const char* kColorFragmentShader = R"(#version 330 core
+in vec4 shade;
+out vec4 pixel;
+void main() { pixel = shade; }
+)";
+
+// Textured with white flat shading: the filtered texel.
+constexpr const char* kTextureVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec2 uv;
+uniform mat4 to_clip;
+out vec2 st;
+void main() {
+  gl_Position = to_clip * vec4(position, 1.0);
+  st = uv;
+}
+)";
+constexpr const char* kTextureFragmentShader = R"(#version 330 core
+uniform sampler2D image;
+in vec2 st;
+out vec4 pixel;
+void main() { pixel = texture(image, st); }
+)";
+
+GLuint compile(GLenum stage, const char* source, std::string& error) {
+  const GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok == GL_TRUE) return shader;
+  char log[1024] = {};
+  glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+  error = std::string("shader compilation failed: ") + log;
+  glDeleteShader(shader);
+  return 0;
+}
+
+GLuint link(const char* vertex_source, const char* fragment_source, std::string& error) {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source, error);
+  if (vertex == 0) return 0;
+  const GLuint fragment = compile(GL_FRAGMENT_SHADER, fragment_source, error);
+  if (fragment == 0) {
+    glDeleteShader(vertex);
+    return 0;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, vertex);
+  glAttachShader(program, fragment);
+  glLinkProgram(program);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok == GL_TRUE) return program;
+  char log[1024] = {};
+  glGetProgramInfoLog(program, sizeof log, nullptr, log);
+  error = std::string("program link failed: ") + log;
+  glDeleteProgram(program);
+  return 0;
+}
+
+template <class T>
+void upload_attribute(GLuint buffer, GLuint location, std::span<const T> values) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(values.size() * sizeof(T)), values.data(),
+               GL_STATIC_DRAW);
+  glVertexAttribPointer(location, GLint(sizeof(T) / sizeof(float)), GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(location);
+}
+
+// Why the peer would not draw what edgewise draws, or empty.
+std::string unsupported(const PeerWorkload& workload) {
+  const DrawMesh& mesh = workload.mesh;
+  const DrawOptions& o = workload.options;
+  if (!mesh.indices.empty()) return "indexed meshes";
+  if (o.cull != CullMode::none || o.scissor) return "culling or a scissor";
+  if (o.interpolation != InterpolationMethod::plane_equations ||
+      o.perspective != Perspective::correct) {
+    return "interpolation other than plane equations, perspective-correct";
+  }
+  if (!o.texture) {
+    if (o.shading != Shading::gouraud || mesh.colors.empty()) return "shading other than Gouraud";
+    return {};
+  }
+  const Texture& texture = *o.texture->texture;
+  const SamplerOptions& sampler = o.texture->sampler;
+  if (o.shading != Shading::flat || !mesh.colors.empty()) return "textures on shaded colours";
+  if (texture.format() != TexelFormat::rgba8 || texture.encoding() != ColorEncoding::linear)
+    return "textures other than linear RGBA8";
+  if (sampler.filter != TextureFilter::trilinear || sampler.wrap_s != WrapMode::repeat ||
+      sampler.wrap_t != WrapMode::repeat || sampler.lod != LodFormula::exact ||
+      sampler.lod_bias != 0.0f || o.texture->derivatives != TextureDerivatives::quad) {
+    return "sampling other than trilinear, repeat, without bias, with quad derivatives";
+  }
+  return {};
+}
+
+}  // namespace
+
+struct LlvmpipePeer::Context {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+  GLuint framebuffer = 0, color = 0, depth = 0, query = 0;
+  // The loaded workload.
+  GLuint vertex_array = 0, buffers[2] = {}, program = 0, texture = 0;
+  GLsizei vertices = 0;
+  GLenum depth_function = GL_LESS;
+  bool depth_write = true;
+  Vec4 clear_color{};
+  float clear_depth = 1.0f;
+
+  void release_workload() {
+    glDeleteVertexArrays(1, &vertex_array);
+    glDeleteBuffers(2, buffers);
+    glDeleteProgram(program);
+    glDeleteTextures(1, &texture);
+    vertex_array = buffers[0] = buffers[1] = program = texture = 0;
+    vertices = 0;
+  }
+
+  ~Context() {
+    if (context != EGL_NO_CONTEXT) {
+      release_workload();
+      glDeleteQueries(1, &query);
+      glDeleteFramebuffers(1, &framebuffer);
+      glDeleteRenderbuffers(1, &color);
+      glDeleteRenderbuffers(1, &depth);
+      eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      eglDestroyContext(display, context);
+    }
+    if (display != EGL_NO_DISPLAY) eglTerminate(display);
+  }
+};
+
+LlvmpipePeer::LlvmpipePeer(std::unique_ptr<Context> context) : context_(std::move(context)) {}
+LlvmpipePeer::~LlvmpipePeer() = default;
+
+std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(std::string& error) {
+  auto c = std::make_unique<Context>();
+  // Client extensions (EGL_EXT_client_extensions) name the platforms this libEGL offers.
+  const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!has_word(client_extensions, "EGL_EXT_platform_base") ||
+      !has_word(client_extensions, "EGL_MESA_platform_surfaceless")) {
+    error = "EGL has no surfaceless platform (EGL_MESA_platform_surfaceless)";
+    return nullptr;
+  }
+  const auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (get_platform_display == nullptr) {
+    error = "EGL has no eglGetPlatformDisplayEXT";
+    return nullptr;
+  }
+  c->display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  if (c->display == EGL_NO_DISPLAY || eglInitialize(c->display, nullptr, nullptr) != EGL_TRUE) {
+    c->display = EGL_NO_DISPLAY;
+    error = "eglInitialize failed on the surfaceless platform";
+    return nullptr;
+  }
+  if (!has_word(eglQueryString(c->display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
+    error = "the EGL display has no EGL_KHR_surfaceless_context";
+    return nullptr;
+  }
+  if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) {
+    error = "EGL has no desktop OpenGL";
+    return nullptr;
+  }
+  // The surfaceless platform has pbuffer configs only: the default EGL_WINDOW_BIT would match
+  // none. Rendering goes to a framebuffer object, so the config's own buffers do not matter.
+  const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
+                                      EGL_DONT_CARE, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint configs = 0;
+  if (eglChooseConfig(c->display, config_attributes, &config, 1, &configs) != EGL_TRUE ||
+      configs < 1) {
+    error = "no EGL config renders OpenGL";
+    return nullptr;
+  }
+  const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                       3,
+                                       EGL_CONTEXT_MINOR_VERSION,
+                                       3,
+                                       EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                       EGL_NONE};
+  c->context = eglCreateContext(c->display, config, EGL_NO_CONTEXT, context_attributes);
+  if (c->context == EGL_NO_CONTEXT) {
+    error = "no OpenGL 3.3 core context";
+    return nullptr;
+  }
+  if (eglMakeCurrent(c->display, EGL_NO_SURFACE, EGL_NO_SURFACE, c->context) != EGL_TRUE) {
+    eglDestroyContext(c->display, c->context);
+    c->context = EGL_NO_CONTEXT;
+    error = "eglMakeCurrent without a surface failed";
+    return nullptr;
+  }
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string name = renderer != nullptr ? renderer : "";
+  if (name.rfind("llvmpipe", 0) != 0) {
+    error = "GL_RENDERER is \"" + name + "\", not llvmpipe";
+    return nullptr;
+  }
+  if (!has_gl_extension("GL_ARB_clip_control")) {
+    error = name + " has no GL_ARB_clip_control";
+    return nullptr;
+  }
+
+  glGenRenderbuffers(1, &c->color);
+  glBindRenderbuffer(GL_RENDERBUFFER, c->color);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kWidth, kHeight);
+  glGenRenderbuffers(1, &c->depth);
+  glBindRenderbuffer(GL_RENDERBUFFER, c->depth);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, kWidth, kHeight);
+  glGenFramebuffers(1, &c->framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, c->framebuffer);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, c->color);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, c->depth);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    error = "the RGBA8 + DEPTH_COMPONENT32F framebuffer is incomplete";
+    return nullptr;
+  }
+  glGenQueries(1, &c->query);
+  // Clip space as edgewise's (camera.hpp): 0 <= z <= w, window depth z/w.
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glDepthRange(0.0, 1.0);
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  if (glGetError() != GL_NO_ERROR) {
+    error = "setting up the framebuffer failed";
+    return nullptr;
+  }
+  auto peer = std::unique_ptr<LlvmpipePeer>(new LlvmpipePeer(std::move(c)));
+  peer->renderer_ = name;
+  return peer;
+}
+
+bool LlvmpipePeer::load(const PeerWorkload& workload, std::string& error) {
+  Context& c = *context_;
+  c.release_workload();
+  if (const std::string what = unsupported(workload); !what.empty()) {
+    error = "the GL peer does not draw " + what;
+    return false;
+  }
+  const DrawMesh& mesh = workload.mesh;
+  const DrawOptions& options = workload.options;
+  const bool textured = options.texture.has_value();
+  c.program = textured ? link(kTextureVertexShader, kTextureFragmentShader, error)
+                       : link(kColorVertexShader, kColorFragmentShader, error);
+  if (c.program == 0) return false;
+  glUseProgram(c.program);
+  Mat4 to_clip = options.transform;
+  for (float& m : to_clip.m[1])
+    m = -m;  // the vertical flip
+  // edgewise's Mat4 is row-major: GL transposes it.
+  glUniformMatrix4fv(glGetUniformLocation(c.program, "to_clip"), 1, GL_TRUE, &to_clip.m[0][0]);
+
+  glGenVertexArrays(1, &c.vertex_array);
+  glBindVertexArray(c.vertex_array);
+  glGenBuffers(2, c.buffers);
+  upload_attribute(c.buffers[0], 0, mesh.positions);
+  if (textured) {
+    upload_attribute(c.buffers[1], 1, mesh.uvs);
+  } else {
+    upload_attribute(c.buffers[1], 1, mesh.colors);
+  }
+  c.vertices = GLsizei(mesh.positions.size());
+
+  if (textured) {
+    const Texture& texture = *options.texture->texture;
+    glGenTextures(1, &c.texture);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, c.texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const auto levels = texture.mip_levels();
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+      glTexImage2D(GL_TEXTURE_2D, GLint(i), GL_RGBA8, levels[i].width, levels[i].height, 0, GL_RGBA,
+                   GL_UNSIGNED_BYTE, texture.texels(levels[i]));
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(levels.size() - 1));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glUniform1i(glGetUniformLocation(c.program, "image"), 0);
+  }
+
+  glViewport(0, 0, kWidth, kHeight);
+  c.depth_function = gl_depth_function(options.depth_test);
+  c.depth_write = options.depth_write;
+  c.clear_color = workload.clear_color;
+  c.clear_depth = workload.clear_depth;
+  glFinish();
+  if (glGetError() != GL_NO_ERROR) {
+    error = "uploading the workload failed";
+    return false;
+  }
+  return true;
+}
+
+void LlvmpipePeer::clear() {
+  const Context& c = *context_;
+  glDepthMask(GL_TRUE);
+  glClearColor(c.clear_color.x, c.clear_color.y, c.clear_color.z, c.clear_color.w);
+  glClearDepth(c.clear_depth);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void LlvmpipePeer::draw() {
+  glDrawArrays(GL_TRIANGLES, 0, context_->vertices);
+}
+
+PeerCounts LlvmpipePeer::count() {
+  const Context& c = *context_;
+  const auto samples_passed = [&](GLenum function, GLboolean write) {
+    clear();
+    glDepthFunc(function);
+    glDepthMask(write);
+    glBeginQuery(GL_SAMPLES_PASSED, c.query);
+    draw();
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint64 samples = 0;
+    glGetQueryObjectui64v(c.query, GL_QUERY_RESULT, &samples);
+    return std::uint64_t(samples);
+  };
+  PeerCounts counts;
+  counts.covered = samples_passed(GL_ALWAYS, GL_FALSE);
+  counts.written = samples_passed(c.depth_function, c.depth_write ? GL_TRUE : GL_FALSE);
+  return counts;
+}
+
+PeerDrawTime LlvmpipePeer::timed_draw() {
+  clear();
+  glFinish();
+  glDepthFunc(context_->depth_function);
+  glDepthMask(context_->depth_write ? GL_TRUE : GL_FALSE);
+  const double cpu_start = process_cpu_seconds();
+  const auto start = std::chrono::steady_clock::now();
+  draw();
+  glFinish();
+  PeerDrawTime time;
+  time.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  time.cpu = process_cpu_seconds() - cpu_start;
+  return time;
+}
+
+}  // namespace edgewise::bench
