@@ -1,5 +1,8 @@
 #include "common/sampler_options.hpp"
 
+#include <span>
+#include <vector>
+
 #include "common/choice_options.hpp"
 #include "common/value_options.hpp"
 

@@ -1,7 +1,7 @@
 // CLI11 options whose value the tools read themselves, so that a mistake gets the tools' message
 // (option_values.hpp) and exit status (UsageError). The value is read when CLI11 has taken the
 // whole command line in, before the tool does any work; the last of an option given twice wins
-// (run_tool.hpp's conventions).
+// (tool_app.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>

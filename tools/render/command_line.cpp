@@ -1,7 +1,5 @@
 #include "render/command_line.hpp"
 
-#include <algorithm>
-#include <stdexcept>
 #include <string>
 
 #include "common/choice_options.hpp"
