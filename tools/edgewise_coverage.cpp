@@ -19,46 +19,42 @@
 #include <string_view>
 #include <vector>
 
+#include "common/isa_options.hpp"
+#include "common/option_values.hpp"
+#include "common/run_tool.hpp"
+#include "common/usage_error.hpp"
+#include "common/value_options.hpp"
 #include "edgewise/edgewise.hpp"
 
 namespace {
 
 using namespace edgewise;
 
-constexpr std::string_view kUsage =
-    "usage: edgewise-coverage W H TRIANGLES [--isa NAME | --reference] [-o FILE]\n"
-    "       edgewise-coverage W H TRIANGLES --compare-isas\n"
-    "\n"
+constexpr const char* kDescription =
     "TRIANGLES has one triangle per line, 'x0 y0 x1 y1 x2 y2' in pixels (origin top-left, y down,\n"
     "pixel centers at +0.5); '#' starts a comment; '-' reads standard input. For each triangle\n"
     "prints '<index> <pixel_count> <row>:<first_col>-<last_col> ...': inclusive runs of covered\n"
     "pixels, rows ascending. Culled and invalid triangles print '<index> 0' and are reported on\n"
     "standard error.\n"
     "--compare-isas rasterizes with the reference and every ISA this CPU supports and exits with\n"
-    "status 1 if any output differs from the reference's.\n";
+    "status 1 if any output differs from the reference's.";
 
-// Bad input or arguments: the message names what was wrong and where.
+// Bad input: the message names what was wrong and where.
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::int32_t parse_dimension(std::string_view text, std::string_view what) {
-  std::int32_t value = -1;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || value < 0 ||
-      value > kMaxTargetSize) {
-    throw InputError(std::string(what) + " '" + std::string(text) + "' is not an integer in 0.." +
-                     std::to_string(kMaxTargetSize));
-  }
-  return value;
-}
-
-Isa parse_isa_option(std::string_view name) {
-  try {
-    return parse_supported_isa(name);
-  } catch (const std::invalid_argument& error) {
-    throw InputError(error.what());
-  }
+// W or H: an integer in 0..kMaxTargetSize.
+CLI::Option* add_dimension(CLI::App& app, const std::string& name, const std::string& what,
+                           std::int32_t& value) {
+  return tools::add_parsed_option(
+             app, name, value,
+             [what](const std::string& text) {
+               return static_cast<std::int32_t>(tools::integer_in(what, text, 0, kMaxTargetSize));
+             },
+             "the target's " + what + " in pixels, 0.." + std::to_string(kMaxTargetSize))
+      ->type_name("")
+      ->required();
 }
 
 // A float as written, or nullopt. NaN and infinity are accepted: they are valid input that the
@@ -287,55 +283,26 @@ struct Arguments {
   bool compare = false;
 };
 
-Arguments parse_arguments(std::span<char*> args) {
-  Arguments parsed;
-  std::vector<std::string_view> positional;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string_view arg = args[i];
-    const auto value = [&]() -> std::string_view {
-      if (i + 1 == args.size()) throw InputError(std::string(arg) + " needs a value");
-      return args[++i];
-    };
-    const auto set_isa = [&](Isa isa) {
-      if (parsed.isa) throw InputError("give at most one of --isa and --reference");
-      parsed.isa = isa;
-    };
-    if (arg == "--isa") {
-      set_isa(parse_isa_option(value()));
-    } else if (arg == "--reference") {
-      set_isa(Isa::reference);
-    } else if (arg == "-o") {
-      parsed.output = std::string(value());
-    } else if (arg == "--compare-isas") {
-      parsed.compare = true;
-    } else if (arg.size() > 1 && arg[0] == '-' && !(arg[1] >= '0' && arg[1] <= '9')) {
-      throw InputError("unknown option " + std::string(arg));
-    } else {
-      positional.push_back(arg);
-    }
-  }
-  if (positional.size() != 3) {
-    throw InputError("expected W H TRIANGLES, got " + std::to_string(positional.size()) +
-                     " arguments");
-  }
-  if (parsed.compare && (parsed.isa || parsed.output)) {
-    throw InputError("--compare-isas takes no --isa, --reference or -o");
-  }
-  parsed.target.width = parse_dimension(positional[0], "width");
-  parsed.target.height = parse_dimension(positional[1], "height");
-  parsed.triangles = std::string(positional[2]);
-  return parsed;
+void add_options(CLI::App& app, Arguments& arguments) {
+  app.description(kDescription);
+  add_dimension(app, "W", "width", arguments.target.width);
+  add_dimension(app, "H", "height", arguments.target.height);
+  app.add_option("TRIANGLES", arguments.triangles, "the triangles' file, '-' for standard input")
+      ->type_name("")
+      ->required();
+  tools::add_isa_options(app, arguments.isa,
+                         "the ISA to rasterize with (default: the best ISA of this CPU, or "
+                         "EDGEWISE_ISA)",
+                         "rasterize with the scalar reference");
+  app.add_option("-o", arguments.output, "write the output to FILE")->type_name("FILE");
+  app.add_flag("--compare-isas", arguments.compare,
+               "compare every supported ISA with the reference");
 }
 
-int run(std::span<char*> args) {
-  for (std::string_view arg : args) {
-    if (arg == "-h" || arg == "--help") {
-      std::cout << kUsage;
-      return 0;
-    }
+int run(const Arguments& arguments) {
+  if (arguments.compare && (arguments.isa || arguments.output)) {
+    throw tools::UsageError("--compare-isas takes no --isa, --reference or -o");
   }
-  const Arguments arguments = parse_arguments(args);
-
   std::vector<Vec2> vertices;
   if (arguments.triangles == "-") {
     vertices = read_triangles(std::cin, "<stdin>");
@@ -349,7 +316,7 @@ int run(std::span<char*> args) {
 
   if (arguments.compare) return compare_isas(vertices, arguments.target) ? 0 : 1;
 
-  const Isa isa = arguments.isa.value_or(active_isa());
+  const Isa isa = tools::tool_isa(arguments.isa);
   if (!arguments.output) {
     list_coverage(vertices, arguments.target, isa, std::cout);
     std::cout.flush();
@@ -367,13 +334,12 @@ int run(std::span<char*> args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(std::span(argv + 1, argv + argc));
-  } catch (const InputError& e) {
-    std::cerr << "edgewise-coverage: " << e.what() << "\n(edgewise-coverage --help for usage)\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "edgewise-coverage: " << e.what() << '\n';
-    return 1;
-  }
+  Arguments arguments;
+  return tools::run_tool(
+      argc, argv, "edgewise-coverage",
+      {"W H TRIANGLES [--isa NAME | --reference] [-o FILE]", "W H TRIANGLES --compare-isas"},
+      [&arguments](CLI::App& app) {
+        add_options(app, arguments);
+        return [&arguments] { return run(arguments); };
+      });
 }

@@ -5,8 +5,6 @@
 // triangles share edges (every sample covered exactly once), slivers thinner than a pixel, and
 // sub-pixel triangles. Two magnified insets show the pixels around the fan's center, where 72
 // triangles meet on one sample, and a corner of the grid, with the true edges drawn over them.
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -25,6 +23,10 @@
 #include <string_view>
 #include <vector>
 
+#include "common/image_file.hpp"
+#include "common/isa_options.hpp"
+#include "common/median.hpp"
+#include "common/run_tool.hpp"
 #include "edgewise/edgewise.hpp"
 #include "exact_area_triangles.hpp"
 
@@ -247,13 +249,12 @@ class Image {
   void write_png(const std::string& path) const {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
-    const OIIO::ImageSpec spec(width_, height_, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels_.data()) ||
-        !out->close()) {
-      throw std::runtime_error(path + ": " + out->geterror());
-    }
+    tools::ImagePixels image;
+    image.width = width_;
+    image.height = height_;
+    image.channels = 3;
+    image.bytes = pixels_;
+    tools::write_image_file(path, image);
   }
 
  private:
@@ -395,8 +396,7 @@ Throughput measure(std::span<const Vec2> vertices, Isa isa, int runs) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (count.pixels != pixels) throw std::logic_error("coverage count changed between runs");
   }
-  std::nth_element(seconds.begin(), seconds.begin() + runs / 2, seconds.end());
-  const double median = seconds[runs / 2];
+  const double median = tools::median(seconds);
   return {double(vertices.size() / 3) / median, double(pixels) / median};
 }
 
@@ -447,24 +447,10 @@ void print_throughput(std::span<const Isa> isas) {
 
 // ---- Main -------------------------------------------------------------------------------------
 
-int run(std::span<char*> args) {
-  std::string output = "out/edgewise-demo.png";
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string_view arg = args[i];
-    if (arg == "-o") {
-      if (i + 1 == args.size()) throw std::invalid_argument("-o needs a file name");
-      output = args[++i];
-    } else if (arg == "-h" || arg == "--help") {
-      std::cout << "usage: edgewise-demo [-o FILE.png]   (default out/edgewise-demo.png)\n";
-      return 0;
-    } else {
-      throw std::invalid_argument("unexpected argument '" + std::string(arg) +
-                                  "'; usage: edgewise-demo [-o FILE.png]");
-    }
-  }
+int run(const std::string& output) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Isa> isas = supported_isas();
-  const Isa active = active_isa();
+  const Isa active = tools::tool_isa(std::nullopt);
   std::cout << "edgewise-demo: active ISA " << name_of(active) << " (supported:";
   for (Isa isa : isas)
     std::cout << ' ' << name_of(isa);
@@ -518,10 +504,13 @@ int run(std::span<char*> args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(std::span(argv + 1, argv + argc));
-  } catch (const std::exception& e) {
-    std::cerr << "edgewise-demo: " << e.what() << '\n';
-    return 1;
-  }
+  std::string output = "out/edgewise-demo.png";
+  return tools::run_tool(argc, argv, "edgewise-demo", {"[-o FILE.png]"}, [&output](CLI::App& app) {
+    app.description(
+        "Renders a 2D test pattern to a PNG, checks that every ISA covers it exactly like the\n"
+        "reference, and prints per-ISA coverage throughput.");
+    app.add_option("-o", output, "the PNG to write (default out/edgewise-demo.png)")
+        ->type_name("FILE.png");
+    return [&output] { return run(output); };
+  });
 }

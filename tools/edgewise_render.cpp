@@ -22,13 +22,15 @@
 #include <string_view>
 #include <vector>
 
+#include "common/isa_options.hpp"
+#include "common/median.hpp"
+#include "common/run_tool.hpp"
 #include "edgewise/edgewise.hpp"
 #include "render/builtin_scenes.hpp"
 #include "render/camera_setup.hpp"
 #include "render/command_line.hpp"
 #include "render/image_writer.hpp"
 #include "render/render_texture.hpp"
-#include "render/usage_error.hpp"
 #include "scene/obj_loader.hpp"
 #include "src/draw_stages.hpp"
 
@@ -36,18 +38,13 @@ namespace {
 
 using namespace edgewise;
 using namespace edgewise::render_tool;
+using tools::median;
 using Clock = std::chrono::steady_clock;
 
 constexpr Vec4 kBackground{0.05f, 0.06f, 0.08f, 1.0f};
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 // What is drawn: the mesh, the camera it comes with (built-in scenes), and its name.
@@ -248,7 +245,7 @@ int render(const RenderSettings& settings, const LoadedScene& loaded, const Draw
            const ResolvedCamera& camera, const TextureInUse* texture, double load_seconds,
            Clock::time_point start) {
   DrawOptions options = draw_options(settings, camera, texture);
-  const Isa isa = options.isa.value_or(active_isa());
+  const Isa isa = tools::tool_isa(options.isa);
   options.isa = isa;
   print_setup(loaded, settings, camera, texture, "ISA " + std::string(name_of(isa)));
 
@@ -383,7 +380,7 @@ int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded
                        const DrawMesh& mesh, const ResolvedCamera& camera,
                        const TextureInUse& texture) {
   DrawOptions options = draw_options(settings, camera, &texture);
-  const Isa isa = options.isa.value_or(active_isa());
+  const Isa isa = tools::tool_isa(options.isa);
   options.isa = isa;
   print_setup(loaded, settings, camera, &texture, "ISA " + std::string(name_of(isa)));
 
@@ -394,7 +391,7 @@ int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded
             << '\n';
   print_filter_row({"filter", "frame", "fastest", "raster + shade", "fragments", "  image"});
   DrawReport report;
-  for (TextureFilter filter : kEveryTextureFilter) {
+  for (TextureFilter filter : values_of<TextureFilter>()) {
     options.texture->sampler.filter = filter;
     const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
     // Appended rather than concatenated: g++ 12 warns falsely (-Wrestrict) on "-" + string.
@@ -418,12 +415,7 @@ int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded
   return 0;
 }
 
-int run(std::span<char* const> args) {
-  const RenderSettings settings = parse_command_line(args);
-  if (settings.help) {
-    std::cout << kUsage;
-    return 0;
-  }
+int run(const RenderSettings& settings) {
   const auto start = Clock::now();
   const LoadedScene loaded = load_scene(settings);
   const double load_seconds = seconds_since(start);
@@ -456,17 +448,9 @@ int run(std::span<char* const> args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(std::span<char* const>(argv + 1, argv + argc));
-  } catch (const UsageError& e) {
-    std::cerr << "edgewise-render: " << e.what() << " (edgewise-render --help for usage)\n";
-    return 1;
-  } catch (const std::bad_alloc&) {
-    // A large texture file with ripmaps and a summed-area table, for one.
-    std::cerr << "edgewise-render: not enough memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "edgewise-render: " << e.what() << '\n';
-    return 1;
-  }
+  RenderCommandLine line;
+  return tools::run_tool(argc, argv, "edgewise-render", usage_lines(), [&line](CLI::App& app) {
+    add_options(app, line);
+    return [&app, &line] { return run(checked_settings(app, line)); };
+  });
 }

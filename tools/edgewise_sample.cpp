@@ -10,19 +10,20 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <new>
 #include <span>
 #include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "common/isa_options.hpp"
+#include "common/run_tool.hpp"
+#include "common/usage_error.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "sample/command_line.hpp"
 #include "sample/record_files.hpp"
-#include "sample/usage_error.hpp"
 #include "texture_io/texture_loader.hpp"
 
 namespace {
@@ -45,7 +46,7 @@ void refuse_output_over_inputs(const SampleSettings& settings) {
   for (const std::string* input : {&settings.queries_path, &settings.texture_path}) {
     std::error_code ignored;  // a path that does not exist names no input
     if (std::filesystem::equivalent(settings.output_path, *input, ignored)) {
-      throw UsageError("--out " + settings.output_path + " is the input file " + *input);
+      throw tools::UsageError("--out " + settings.output_path + " is the input file " + *input);
     }
   }
 }
@@ -90,13 +91,8 @@ std::string seconds_text(double seconds) {
   return out.str();
 }
 
-int run(std::span<char* const> args) {
-  const SampleSettings settings = parse_command_line(args);
-  if (settings.help) {
-    std::cout << kUsage;
-    return 0;
-  }
-  const Isa isa = resolve_isa(settings);
+int run(const SampleSettings& settings) {
+  const Isa isa = tools::tool_isa(settings.isa);
   const auto start = Clock::now();
 
   // Files first: a wrong path costs no texture build.
@@ -143,16 +139,9 @@ int run(std::span<char* const> args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(std::span<char* const>(argv + 1, argv + argc));
-  } catch (const UsageError& e) {
-    std::cerr << "edgewise-sample: " << e.what() << " (edgewise-sample --help for usage)\n";
-    return 2;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "edgewise-sample: not enough memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "edgewise-sample: " << e.what() << '\n';
-    return 1;
-  }
+  SampleSettings settings;
+  return tools::run_tool(argc, argv, "edgewise-sample", usage_lines(), [&settings](CLI::App& app) {
+    add_options(app, settings);
+    return [&settings] { return run(settings); };
+  });
 }

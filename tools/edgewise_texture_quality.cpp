@@ -7,14 +7,17 @@
 // the peer's lookups timed the same way; with --draw, of one clear and draw() of the view's mesh.
 // These are this tool's figures, for placing the methods against each other; the benchmark suite
 // gives the official throughput.
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
-#include <new>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "common/median.hpp"
+#include "common/progress.hpp"
+#include "common/run_tool.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/sample.hpp"
@@ -23,7 +26,6 @@
 #include "texture_quality/drawn_view.hpp"
 #include "texture_quality/filter_methods.hpp"
 #include "texture_quality/ground_truth_store.hpp"
-#include "texture_quality/median_time.hpp"
 #include "texture_quality/oiio_peer.hpp"
 #include "texture_quality/pareto_front.hpp"
 #include "texture_quality/result_images.hpp"
@@ -31,7 +33,6 @@
 #include "texture_quality/score_csv.hpp"
 #include "texture_quality/score_row.hpp"
 #include "texture_quality/score_table.hpp"
-#include "texture_quality/usage_error.hpp"
 #include "texture_quality/writable_directory.hpp"
 #include "texture_scene/image_metrics.hpp"
 #include "texture_scene/linear_image.hpp"
@@ -40,6 +41,7 @@ namespace {
 
 using namespace edgewise;
 using namespace edgewise::texture_quality;
+using tools::median_seconds;
 
 // Everything a scene's methods share: its queries, ground truth and where its pictures go.
 struct SceneRun {
@@ -101,12 +103,22 @@ std::vector<ScoreRow> score_scene(const SceneRun& scene, const Texture& texture,
                                   std::span<const FilterMethod> methods, int repetitions) {
   std::vector<Vec4> colours(scene.queries.size());
   std::vector<ScoreRow> rows;
+  const std::size_t runs_per_isa = methods.size() * (drawn != nullptr ? 3 : 1);
+  tools::Progress progress(
+      "  scoring",
+      static_cast<std::int64_t>(isas.size() * runs_per_isa +
+                                (peer != nullptr ? std::size(kPeerModeNames) : 0)),
+      "methods");
+  const auto add_row = [&](ScoreRow row) {
+    rows.push_back(std::move(row));
+    progress.update(static_cast<std::int64_t>(rows.size()));
+  };
   for (Isa isa : isas) {
     for (const FilterMethod& method : methods) {
       const double seconds = median_seconds(repetitions, [&] {
         sample(texture, {method.options, isa}, scene.queries, colours);
       });
-      rows.push_back(scene.score(method.name, name_of(isa), colours, seconds));
+      add_row(scene.score(method.name, name_of(isa), colours, seconds));
     }
     if (drawn == nullptr) continue;
     for (TextureDerivatives derivatives :
@@ -116,7 +128,7 @@ std::vector<ScoreRow> score_scene(const SceneRun& scene, const Texture& texture,
             repetitions, [&] { drawn->draw(texture, method.options, derivatives, isa); });
         drawn->read(colours);
         const std::string name = "draw_" + std::string(name_of(derivatives)) + "_" + method.name;
-        rows.push_back(scene.score(name, name_of(isa), colours, seconds));
+        add_row(scene.score(name, name_of(isa), colours, seconds));
       }
     }
   }
@@ -124,10 +136,10 @@ std::vector<ScoreRow> score_scene(const SceneRun& scene, const Texture& texture,
     for (std::size_t mode = 0; mode < std::size(kPeerModeNames); ++mode) {
       const double seconds =
           median_seconds(repetitions, [&] { peer->sample(mode, scene.queries, colours); });
-      rows.push_back(
-          scene.score("oiio_" + std::string(kPeerModeNames[mode]), "oiio", colours, seconds));
+      add_row(scene.score("oiio_" + std::string(kPeerModeNames[mode]), "oiio", colours, seconds));
     }
   }
+  progress.finish();
   return rows;
 }
 
@@ -152,12 +164,7 @@ void print_preamble(const QualitySettings& settings, const std::string& size,
   }
 }
 
-int run(std::span<char* const> args) {
-  const QualitySettings settings = parse_command_line(args);
-  if (settings.help) {
-    std::cout << kUsage;
-    return 0;
-  }
+int run(const QualitySettings& settings) {
   const std::vector<Isa> isas = resolve_isas(settings);
   const std::vector<FilterMethod> methods = filter_methods(settings.methods);
 
@@ -225,17 +232,10 @@ int run(std::span<char* const> args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(std::span<char* const>(argv + 1, argv + argc));
-  } catch (const UsageError& e) {
-    std::cerr << "edgewise-texture-quality: " << e.what()
-              << " (edgewise-texture-quality --help for usage)\n";
-    return 2;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "edgewise-texture-quality: not enough memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "edgewise-texture-quality: " << e.what() << '\n';
-    return 1;
-  }
+  QualitySettings settings;
+  return tools::run_tool(argc, argv, "edgewise-texture-quality", usage_lines(),
+                         [&settings](CLI::App& app) {
+                           add_options(app, settings);
+                           return [&settings] { return run(settings); };
+                         });
 }

@@ -9,12 +9,14 @@
 #include <iostream>
 #include <limits>
 #include <random>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "common/option_values.hpp"
+#include "common/run_tool.hpp"
+#include "common/value_options.hpp"
 #include "edgewise/coverage.hpp"
 #include "exact_area_triangles.hpp"
 
@@ -22,10 +24,9 @@ namespace {
 
 using edgewise::Vec2;
 
-constexpr std::string_view kUsage =
-    "usage: edgewise-random-triangles W H COUNT [--seed N] [-o FILE]\n"
+constexpr const char* kDescription =
     "Writes COUNT triangles 'x0 y0 x1 y1 x2 y2' around a W x H target, cycling through the\n"
-    "generators uniform, tiny, sliver, ties, near-axis, exact-area, huge and degenerate.\n";
+    "generators uniform, tiny, sliver, ties, near-axis, exact-area, huge and degenerate.";
 
 struct Triangle {
   Vec2 v[3];
@@ -155,47 +156,53 @@ std::string text(float value) {
   return std::string(buffer, end);
 }
 
-std::uint64_t parse_count(std::string_view text, std::string_view what, std::uint64_t max) {
-  std::uint64_t value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || value > max) {
-    throw std::invalid_argument(std::string(what) + " '" + std::string(text) +
-                                "' is not an integer in 0.." + std::to_string(max));
-  }
-  return value;
-}
-
-int run(std::span<char*> args) {
-  std::vector<std::string_view> positional;
+struct Arguments {
+  int width = 0, height = 0;
+  std::uint64_t count = 0;
   std::uint64_t seed = 1;
   std::string output;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string_view arg = args[i];
-    if (arg == "-h" || arg == "--help") {
-      std::cout << kUsage;
-      return 0;
-    }
-    if ((arg == "--seed" || arg == "-o") && i + 1 == args.size()) {
-      throw std::invalid_argument(std::string(arg) + " needs a value");
-    }
-    if (arg == "--seed") {
-      seed = parse_count(args[++i], "seed", std::numeric_limits<std::uint64_t>::max());
-    } else if (arg == "-o") {
-      output = args[++i];
-    } else {
-      positional.push_back(arg);
-    }
-  }
-  if (positional.size() != 3) throw std::invalid_argument("expected W H COUNT");
-  const int width = int(parse_count(positional[0], "width", edgewise::kMaxTargetSize));
-  const int height = int(parse_count(positional[1], "height", edgewise::kMaxTargetSize));
-  if (width == 0 || height == 0) throw std::invalid_argument("W and H must be at least 1");
-  const std::uint64_t count = parse_count(positional[2], "count", 100'000'000);
+};
 
+// An integer in lo..hi, named `what` in messages.
+template <class Int>
+CLI::Option* add_count(CLI::App& app, const std::string& name, const std::string& what, Int& value,
+                       std::uint64_t lo, std::uint64_t hi, const std::string& description) {
+  return edgewise::tools::add_parsed_option(
+             app, name, value,
+             [what, lo, hi](const std::string& text) {
+               return static_cast<Int>(edgewise::tools::unsigned_in(what, text, lo, hi));
+             },
+             description)
+      ->type_name("");
+}
+
+void add_options(CLI::App& app, Arguments& arguments) {
+  app.description(kDescription);
+  const std::uint64_t max_side = edgewise::kMaxTargetSize;
+  add_count(app, "W", "width", arguments.width, 1, max_side,
+            "the target's width in pixels, 1.." + std::to_string(max_side))
+      ->required();
+  add_count(app, "H", "height", arguments.height, 1, max_side,
+            "the target's height in pixels, 1.." + std::to_string(max_side))
+      ->required();
+  add_count(app, "COUNT", "count", arguments.count, 0, 100'000'000,
+            "how many triangles, 0..100000000")
+      ->required();
+  add_count(app, "--seed", "seed", arguments.seed, 0, std::numeric_limits<std::uint64_t>::max(),
+            "the random generator's seed (default 1)")
+      ->type_name("N");
+  app.add_option("-o", arguments.output, "write to FILE (default: standard output)")
+      ->type_name("FILE");
+}
+
+int run(const Arguments& arguments) {
+  const int width = arguments.width, height = arguments.height;
+  const std::uint64_t count = arguments.count, seed = arguments.seed;
+  const std::string& output = arguments.output;
   std::ofstream file;
   if (!output.empty()) {
     file.open(output);
-    if (!file) throw std::invalid_argument(output + ": cannot create");
+    if (!file) throw std::runtime_error(output + ": cannot create");
   }
   std::ostream& out = output.empty() ? std::cout : file;
   out << "# edgewise-random-triangles " << width << ' ' << height << ' ' << count << " --seed "
@@ -214,10 +221,10 @@ int run(std::span<char*> args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(std::span(argv + 1, argv + argc));
-  } catch (const std::exception& e) {
-    std::cerr << "edgewise-random-triangles: " << e.what() << '\n';
-    return 1;
-  }
+  Arguments arguments;
+  return edgewise::tools::run_tool(argc, argv, "edgewise-random-triangles",
+                                   {"W H COUNT [--seed N] [-o FILE]"}, [&arguments](CLI::App& app) {
+                                     add_options(app, arguments);
+                                     return [&arguments] { return run(arguments); };
+                                   });
 }

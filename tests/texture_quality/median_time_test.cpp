@@ -1,11 +1,11 @@
-#include "texture_quality/median_time.hpp"
+#include "common/median.hpp"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <vector>
 
-namespace edgewise::texture_quality {
+namespace edgewise::tools {
 namespace {
 
 double median_of(std::vector<double> values) {
@@ -35,4 +35,4 @@ TEST(MedianSeconds, RunsTheWorkOncePerRepetitionAndAtLeastOnce) {
 }
 
 }  // namespace
-}  // namespace edgewise::texture_quality
+}  // namespace edgewise::tools

@@ -23,6 +23,7 @@ EDGEWISE_DEMO_PACKAGES=(
   libopenimageio-dev   # image files: the tools write PNG images and read textures
   openimageio-tools    # OpenImageIO's CMake package imports its tools (/usr/bin/iconvert...): no configure without
   libtinyobjloader-dev # edgewise-render reads OBJ meshes (testing/scene)
+  libcli11-dev         # CLI11: every tool parses its command line with it
 )
 
 # tools/check, stage by stage.
@@ -58,6 +59,7 @@ EDGEWISE_CHECK_SANITIZE_PACKAGES=(
   libopenimageio-dev   # the tools, whose tests run sanitized too
   openimageio-tools    # OpenImageIO's CMake package needs them; oiiotool writes test textures
   libtinyobjloader-dev # edgewise-render and the mesh tests
+  libcli11-dev         # CLI11: the tools' command lines
   libgtest-dev         # GoogleTest: the test suite
 )
 EDGEWISE_CHECK_FUZZ_PACKAGES=(

@@ -58,21 +58,6 @@ scene::Scene ground_scene() {
 
 }  // namespace
 
-bool is_builtin_scene(std::string_view name) {
-  return std::find(std::begin(kBuiltinSceneNames), std::end(kBuiltinSceneNames), name) !=
-         std::end(kBuiltinSceneNames);
-}
-
-std::string builtin_scene_list() {
-  std::string list;
-  const std::size_t count = std::size(kBuiltinSceneNames);
-  for (std::size_t i = 0; i < count; ++i) {
-    if (i > 0) list += i + 1 == count ? " or " : ", ";
-    list += kBuiltinSceneNames[i];
-  }
-  return list;
-}
-
 scene::Scene make_builtin_scene(std::string_view name) {
   if (name == "default") return scene::default_scene();
   if (name == "sphere") return sphere_scene();

@@ -15,10 +15,7 @@ namespace edgewise::render_tool {
 //   ground   the checkerboard plane receding to the horizon, seen from eye height
 inline constexpr std::string_view kBuiltinSceneNames[] = {"default", "sphere", "torus", "ground"};
 
-bool is_builtin_scene(std::string_view name);
-// "default, sphere, torus or ground"
-std::string builtin_scene_list();
-// Throws std::invalid_argument for a name that is_builtin_scene() refuses.
+// Throws std::invalid_argument for a name not in kBuiltinSceneNames.
 scene::Scene make_builtin_scene(std::string_view name);
 
 }  // namespace edgewise::render_tool

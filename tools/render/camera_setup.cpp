@@ -4,11 +4,15 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
-#include "render/usage_error.hpp"
+#include "common/usage_error.hpp"
 
 namespace edgewise::render_tool {
+
+using tools::UsageError;
+
 namespace {
 
 struct Vec3d {
@@ -103,7 +107,8 @@ ResolvedCamera resolve_camera(const CameraOverrides& overrides,
   }
 
   if (!std::isfinite(view.eye.x) || !std::isfinite(view.eye.y) || !std::isfinite(view.eye.z)) {
-    throw UsageError("the mesh is too large to frame: the eye would lie beyond the float range");
+    throw std::runtime_error(
+        "the mesh is too large to frame: the eye would lie beyond the float range");
   }
   const Vec3d to_target = widen(view.target) - widen(view.eye);
   const double distance = length(to_target);

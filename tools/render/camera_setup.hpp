@@ -27,8 +27,9 @@ struct ResolvedCamera {
 // eye). The orthographic view's half height is what the perspective camera sees at the target's
 // distance: distance * tan(fov / 2).
 //
-// Throws UsageError for a camera that cannot be built: eye at the target, up parallel to the
-// view direction, near not below far, or a perspective near plane not in front of the eye.
+// Throws UsageError (common/usage_error.hpp) for a camera that cannot be built: eye at the
+// target, up parallel to the view direction, near not below far, or a perspective near plane not
+// in front of the eye; std::runtime_error for a mesh too large to frame.
 ResolvedCamera resolve_camera(const CameraOverrides& overrides,
                               const std::optional<scene::SceneCamera>& scene_camera,
                               const scene::Box3& bounds, float aspect);

@@ -1,81 +1,29 @@
 #include "render/command_line.hpp"
 
-#include <charconv>
-#include <cmath>
-#include <stdexcept>
 #include <string>
-#include <system_error>
 
-#include "option_values.hpp"
-#include "edgewise/interpolation.hpp"
-#include "edgewise/isa.hpp"
+#include "common/choice_options.hpp"
+#include "common/isa_options.hpp"
+#include "common/option_values.hpp"
+#include "common/sampler_options.hpp"
+#include "common/usage_error.hpp"
+#include "common/value_options.hpp"
 #include "edgewise/coverage.hpp"
+#include "edgewise/interpolation.hpp"
 #include "render/builtin_scenes.hpp"
 #include "render/image_writer.hpp"
-#include "render/render_texture.hpp"
-#include "render/usage_error.hpp"
 
 namespace edgewise::render_tool {
-
-const std::string_view kUsage =
-    "usage: edgewise-render [--obj FILE | --scene default|sphere|torus|ground] [options]\n"
-    "\n"
-    "Renders a mesh with edgewise::draw() and prints the pipeline's counts and stage times.\n"
-    "\n"
-    "Camera (default: the built-in scene's camera; for --obj, one framing the mesh's box):\n"
-    "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z\n"
-    "  --fov DEGREES          vertical field of view, in (0, 180)\n"
-    "  --near N --far F       clip distances along the view direction\n"
-    "  --ortho                orthographic: shows at every depth what the perspective camera\n"
-    "                         shows at the target's distance; near and far hold the scene\n"
-    "Image and pipeline:\n"
-    "  --size WxH             default 1280x720\n"
-    "  --method NAME          nearest_vertex, inverse_distance, subtriangle_areas,\n"
-    "                         edge_functions, scanline, plane_equations (default)\n"
-    "  --perspective correct|affine   attribute interpolation (default correct)\n"
-    "  --shading flat|gouraud|diffuse (default diffuse)\n"
-    "  --depth-test less|less_equal|greater|always|never (default less; the depth buffer is\n"
-    "                         cleared to 0 for greater, to 1 otherwise)\n"
-    "  --no-depth-write\n"
-    "  --cull none|cw|ccw     winding on screen to remove (default cw: the back faces)\n"
-    "  --light X,Y,Z          direction towards the light, world space (0,0,0: ambient only)\n"
-    "  --isa NAME | --reference   default: the best ISA of this CPU (or EDGEWISE_ISA)\n"
-    "Texture (the options after --texture need it):\n"
-    "  --texture FILE|checker texture the mesh: an image file (read through OpenImageIO as\n"
-    "                         edgewise-sample reads it) or the built-in checkerboard (1024x1024\n"
-    "                         texels, 8x8 squares). The mesh's uvs address it (an OBJ file needs\n"
-    "                         vt lines) and its vertex colours become white: the texture gives\n"
-    "                         the colour, which shading (flat, gouraud, diffuse) still scales\n"
-    "  --filter NAME          nearest, bilinear, bicubic_catmull_rom, bicubic_bspline,\n"
-    "                         mip_nearest, trilinear (default), supersample, ripmap, summed_area,\n"
-    "                         anisotropic, ewa (ripmaps and the summed-area table are built only\n"
-    "                         for their filter)\n"
-    "  --each-filter          one run per filter in the order above (--repeat frames each) and a\n"
-    "                         table of their times; -o FILE.png writes FILE-<filter>.png\n"
-    "  --wrap W               repeat (default), clamp or mirror, on both axes\n"
-    "  --lod exact|max_axis   level-of-detail formula (default exact)\n"
-    "  --lod-bias F           added to log2 of the footprint (default 0)\n"
-    "  --max-aniso N          anisotropic probes, EWA eccentricity: 1..64 (default 16)\n"
-    "  --taps N               supersample: N x N taps, 1..16 (default 4)\n"
-    "  --pyramid box|lanczos3 how coarser levels are made (default box)\n"
-    "  --srgb                 R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
-    "                         others when loaded; alpha is linear\n"
-    "  --derivatives quad|analytic   the sampler's screen derivatives of (s, t): differences in\n"
-    "                         2x2 pixel quads, as GPUs take them (default), or exact, from the\n"
-    "                         plane equations\n"
-    "Running:\n"
-    "  --repeat N             draw N times into the same framebuffer, report median times\n"
-    "  -o FILE                write FILE.png (RGBA8) or FILE.exr (float R, G, B, A and the\n"
-    "                         depth buffer as channel Z)\n"
-    "  --compare-isas         render with the reference once and with every supported ISA\n"
-    "                         (--repeat times); report depth mismatches and colour differences;\n"
-    "                         exit status 1 if any depth value or count differs\n";
-
 namespace {
 
 using tools::parse_finite_float;
-using tools::quoted;
-using Values = tools::OptionValues<UsageError>;
+using tools::UsageError;
+
+constexpr const char* kCameraGroup =
+    "Camera (default: the built-in scene's camera; for --obj, one framing the mesh's box)";
+constexpr const char* kPipelineGroup = "Image and pipeline";
+constexpr const char* kTextureGroup = "Texture (the options after --texture need it)";
+constexpr const char* kRunningGroup = "Running";
 
 Vec3 parse_vector(std::string_view option, std::string_view text) {
   float xyz[3];
@@ -84,13 +32,22 @@ Vec3 parse_vector(std::string_view option, std::string_view text) {
     const std::size_t comma = i < 2 ? rest.find(',') : std::string_view::npos;
     const std::optional<float> value = parse_finite_float(rest.substr(0, comma));
     if (!value || (i < 2 && comma == std::string_view::npos)) {
-      throw UsageError(std::string(option) + " " + quoted(text) +
+      throw UsageError(std::string(option) + " " + tools::quoted(text) +
                        " is not three finite numbers X,Y,Z");
     }
     xyz[i] = *value;
     if (i < 2) rest.remove_prefix(comma + 1);
   }
   return {xyz[0], xyz[1], xyz[2]};
+}
+
+CLI::Option* add_vector_option(CLI::App& app, const std::string& name, std::optional<Vec3>& value,
+                               const std::string& description) {
+  return tools::add_parsed_option(
+             app, name, value,
+             [name](const std::string& text) { return std::optional(parse_vector(name, text)); },
+             description)
+      ->type_name("X,Y,Z");
 }
 
 std::int32_t parse_side(std::string_view text, bool& ok) {
@@ -107,70 +64,148 @@ void parse_size(std::string_view text, RenderSettings& settings) {
     settings.height = parse_side(text.substr(x + 1), height_ok);
   }
   if (!width_ok || !height_ok) {
-    throw UsageError("--size " + quoted(text) + " is not WxH with sides 1.." +
+    throw UsageError("--size " + tools::quoted(text) + " is not WxH with sides 1.." +
                      std::to_string(kMaxTargetSize));
   }
   if (std::int64_t{settings.width} * settings.height > kMaxPixels) {
-    throw UsageError("--size " + quoted(text) + " has more than " + std::to_string(kMaxPixels) +
-                     " pixels");
+    throw UsageError("--size " + tools::quoted(text) + " has more than " +
+                     std::to_string(kMaxPixels) + " pixels");
   }
 }
 
-Isa parse_isa_option(std::string_view name) {
-  try {
-    return parse_supported_isa(name);
-  } catch (const std::invalid_argument& error) {
-    throw UsageError(error.what());
+void add_camera_options(CLI::App& app, CameraOverrides& camera) {
+  add_vector_option(app, "--eye", camera.eye, "where the camera is")->group(kCameraGroup);
+  add_vector_option(app, "--target", camera.target, "the point it looks at")->group(kCameraGroup);
+  add_vector_option(app, "--up", camera.up, "the direction that is up on screen")
+      ->group(kCameraGroup);
+  tools::add_parsed_option(
+      app, "--fov", camera.fov_degrees,
+      [](const std::string& text) {
+        const float fov = tools::finite_number("--fov", text);
+        if (!(fov > 0.0f && fov < 180.0f)) {
+          throw UsageError("--fov " + tools::quoted(text) + " is not in (0, 180) degrees");
+        }
+        return std::optional(fov);
+      },
+      "vertical field of view, in (0, 180)")
+      ->type_name("DEGREES")
+      ->group(kCameraGroup);
+  const auto distance = [](const char* option) {
+    return [option](const std::string& text) {
+      return std::optional(tools::finite_number(option, text));
+    };
+  };
+  tools::add_parsed_option(app, "--near", camera.near_plane, distance("--near"),
+                           "clip distance along the view direction")
+      ->type_name("N")
+      ->group(kCameraGroup);
+  tools::add_parsed_option(app, "--far", camera.far_plane, distance("--far"),
+                           "clip distance along the view direction")
+      ->type_name("F")
+      ->group(kCameraGroup);
+  app.add_flag("--ortho", camera.orthographic,
+               "orthographic: shows at every depth what the perspective camera\n"
+               "shows at the target's distance; near and far hold the scene")
+      ->group(kCameraGroup);
+}
+
+void add_pipeline_options(CLI::App& app, RenderCommandLine& line) {
+  RenderSettings& settings = line.settings;
+  DrawOptions& draw = settings.draw;
+  app.add_option_function<std::string>(
+         "--size", [&settings](const std::string& text) { parse_size(text, settings); },
+         "default 1280x720")
+      ->type_name("WxH")
+      ->group(kPipelineGroup);
+  tools::add_enum_option(app, "--method", draw.interpolation,
+                         "attribute interpolation method (default plane_equations)")
+      ->group(kPipelineGroup);
+  tools::add_enum_option(app, "--perspective", draw.perspective,
+                         "attribute interpolation (default correct)")
+      ->group(kPipelineGroup);
+  tools::add_enum_option(app, "--shading", draw.shading, "(default diffuse)")
+      ->group(kPipelineGroup);
+  tools::add_enum_option(app, "--depth-test", draw.depth_test,
+                         "(default less; the depth buffer is cleared to 0 for\n"
+                         "greater, to 1 otherwise)")
+      ->group(kPipelineGroup);
+  app.add_flag_callback(
+         "--no-depth-write", [&draw] { draw.depth_write = false; },
+         "leave the depth buffer as it is")
+      ->group(kPipelineGroup);
+  tools::add_named_option(
+      app, "--cull", draw.cull, {CullMode::none, CullMode::clockwise, CullMode::counter_clockwise},
+      cull_mode_name, "winding on screen to remove (default cw: the back faces)")
+      ->group(kPipelineGroup);
+  tools::add_parsed_option(
+      app, "--light", draw.light_direction,
+      [](const std::string& text) { return parse_vector("--light", text); },
+      "direction towards the light, world space (0,0,0: ambient only)")
+      ->type_name("X,Y,Z")
+      ->group(kPipelineGroup);
+  tools::add_isa_options(app, line.isa, "default: the best ISA of this CPU (or EDGEWISE_ISA)",
+                         "the scalar reference");
+  app.get_option("--isa")->group(kPipelineGroup);
+  app.get_option("--reference")->group(kPipelineGroup);
+}
+
+void add_texture_options(CLI::App& app, RenderCommandLine& line) {
+  TextureSettings& texture = line.texture;
+  tools::add_parsed_option(
+      app, "--texture", line.texture_source,
+      [](const std::string& text) {
+        if (text.empty()) throw UsageError("--texture needs a file name or checker");
+        return std::optional(text);
+      },
+      "texture the mesh: an image file (read through OpenImageIO as\n"
+      "edgewise-sample reads it) or the built-in checkerboard (1024x1024\n"
+      "texels, 8x8 squares). The mesh's uvs address it (an OBJ file needs\n"
+      "vt lines) and its vertex colours become white: the texture gives\n"
+      "the colour, which shading (flat, gouraud, diffuse) still scales")
+      ->type_name("FILE|checker")
+      ->group(kTextureGroup);
+  tools::add_filter_option(app, texture.sampler.filter,
+                           "(default trilinear; ripmaps and the summed-area table are\n"
+                           "built only for their filter)")
+      ->group(kTextureGroup);
+  app.add_flag("--each-filter", texture.each_filter,
+               "one run per filter in the order above (--repeat frames each) and a\n"
+               "table of their times; -o FILE.png writes FILE-<filter>.png")
+      ->group(kTextureGroup);
+  tools::add_sampler_options(app, texture.sampler);
+  tools::add_pyramid_option(app, texture.pyramid, "how coarser levels are made (default box)");
+  app.add_flag("--srgb", texture.srgb,
+               "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
+               "others when loaded; alpha is linear");
+  tools::add_enum_option(app, "--derivatives", texture.derivatives,
+                         "the sampler's screen derivatives of (s, t): differences in\n"
+                         "2x2 pixel quads, as GPUs take them (default), or exact, from the\n"
+                         "plane equations");
+  for (const char* name : {"--wrap", "--lod", "--lod-bias", "--max-aniso", "--taps", "--pyramid",
+                           "--srgb", "--derivatives"}) {
+    app.get_option(name)->group(kTextureGroup);
   }
 }
 
-std::optional<CullMode> parse_cull_mode(std::string_view name) {
-  for (CullMode mode : {CullMode::none, CullMode::clockwise, CullMode::counter_clockwise}) {
-    if (cull_mode_name(mode) == name) return mode;
-  }
-  return std::nullopt;
-}
-
-// "nearest, bilinear, ... or ewa", from the filters themselves.
-std::string texture_filter_list() {
-  std::string names;
-  for (std::size_t i = 0; i < std::size(kEveryTextureFilter); ++i) {
-    if (i > 0) names += i + 1 == std::size(kEveryTextureFilter) ? " or " : ", ";
-    names += name_of(kEveryTextureFilter[i]);
-  }
-  return names;
-}
-
-// Parses the texture option `arg` into `texture`; false when `arg` is no texture option.
-template <class Value>
-bool parse_texture_option(std::string_view arg, Value value, TextureSettings& texture) {
-  SamplerOptions& sampler = texture.sampler;
-  if (arg == "--filter") {
-    sampler.filter = Values::named(arg, value(), parse_name<TextureFilter>, texture_filter_list());
-  } else if (arg == "--each-filter") {
-    texture.each_filter = true;
-  } else if (arg == "--wrap") {
-    sampler.wrap_s = sampler.wrap_t =
-        Values::named(arg, value(), parse_name<WrapMode>, "repeat, clamp or mirror");
-  } else if (arg == "--lod") {
-    sampler.lod = Values::named(arg, value(), parse_name<LodFormula>, "exact or max_axis");
-  } else if (arg == "--lod-bias") {
-    sampler.lod_bias = Values::number(arg, value());
-  } else if (arg == "--max-aniso") {
-    sampler.max_anisotropy = Values::integer_in(arg, value(), 1, kMaxAnisotropyLimit);
-  } else if (arg == "--taps") {
-    sampler.supersample_taps = Values::integer_in(arg, value(), 1, kMaxSupersampleTaps);
-  } else if (arg == "--pyramid") {
-    texture.pyramid = Values::named(arg, value(), parse_name<PyramidFilter>, "box or lanczos3");
-  } else if (arg == "--srgb") {
-    texture.srgb = true;
-  } else if (arg == "--derivatives") {
-    texture.derivatives =
-        Values::named(arg, value(), parse_name<TextureDerivatives>, "quad or analytic");
-  } else {
-    return false;
-  }
-  return true;
+void add_running_options(CLI::App& app, RenderSettings& settings) {
+  tools::add_integer_option(app, "--repeat", settings.repeat, 1, kMaxRepeat,
+                            "draw N times into the same framebuffer, report median times")
+      ->group(kRunningGroup);
+  tools::add_parsed_option(
+      app, "-o", settings.output,
+      [](const std::string& path) {
+        image_format_for(path);  // refuse an unknown extension before any work
+        return std::optional(path);
+      },
+      "write FILE.png (RGBA8) or FILE.exr (float R, G, B, A and the\n"
+      "depth buffer as channel Z)")
+      ->type_name("FILE")
+      ->group(kRunningGroup);
+  app.add_flag("--compare-isas", settings.compare_isas,
+               "render with the reference once and with every supported ISA\n"
+               "(--repeat times); report depth mismatches and colour differences;\n"
+               "exit status 1 if any depth value or count differs")
+      ->group(kRunningGroup);
 }
 
 }  // namespace
@@ -187,117 +222,48 @@ std::string_view cull_mode_name(CullMode mode) {
   return "unknown";
 }
 
-RenderSettings parse_command_line(std::span<char* const> args) {
-  RenderSettings settings;
-  bool scene_given = false, isa_given = false;
-  // Texture options may come before --texture; they are checked against it at the end.
-  TextureSettings texture;
-  std::optional<std::string> texture_source;
-  std::string first_texture_option;
-  bool filter_given = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string_view arg = args[i];
-    const auto value = [&]() -> std::string_view {
-      if (i + 1 == args.size()) throw UsageError(std::string(arg) + " needs a value");
-      return args[++i];
-    };
-    const auto set_isa = [&](Isa isa) {
-      if (isa_given) throw UsageError("give at most one of --isa and --reference");
-      isa_given = true;
-      settings.draw.isa = isa;
-    };
-    CameraOverrides& camera = settings.camera;
-    if (arg == "-h" || arg == "--help") {
-      settings.help = true;
-    } else if (arg == "--obj") {
-      settings.obj_path = std::string(value());
-    } else if (arg == "--scene") {
-      const std::string_view name = value();
-      if (!is_builtin_scene(name)) {
-        throw UsageError("unknown --scene value " + quoted(name) + "; expected " +
-                         builtin_scene_list());
-      }
-      settings.scene_name = std::string(name);
-      scene_given = true;
-    } else if (arg == "--eye") {
-      camera.eye = parse_vector(arg, value());
-    } else if (arg == "--target") {
-      camera.target = parse_vector(arg, value());
-    } else if (arg == "--up") {
-      camera.up = parse_vector(arg, value());
-    } else if (arg == "--fov") {
-      const std::string_view text = value();
-      camera.fov_degrees = Values::number(arg, text);
-      if (!(*camera.fov_degrees > 0.0f && *camera.fov_degrees < 180.0f)) {
-        throw UsageError("--fov " + quoted(text) + " is not in (0, 180) degrees");
-      }
-    } else if (arg == "--near") {
-      camera.near_plane = Values::number(arg, value());
-    } else if (arg == "--far") {
-      camera.far_plane = Values::number(arg, value());
-    } else if (arg == "--ortho") {
-      camera.orthographic = true;
-    } else if (arg == "--size") {
-      parse_size(value(), settings);
-    } else if (arg == "--method") {
-      settings.draw.interpolation =
-          Values::named(arg, value(), parse_name<InterpolationMethod>,
-                        "nearest_vertex, inverse_distance, subtriangle_areas, edge_functions, "
-                        "scanline or plane_equations");
-    } else if (arg == "--perspective") {
-      settings.draw.perspective =
-          Values::named(arg, value(), parse_name<Perspective>, "correct or affine");
-    } else if (arg == "--shading") {
-      settings.draw.shading =
-          Values::named(arg, value(), parse_name<Shading>, "flat, gouraud or diffuse");
-    } else if (arg == "--depth-test") {
-      settings.draw.depth_test = Values::named(arg, value(), parse_name<DepthTest>,
-                                               "less, less_equal, greater, always or never");
-    } else if (arg == "--no-depth-write") {
-      settings.draw.depth_write = false;
-    } else if (arg == "--cull") {
-      settings.draw.cull = Values::named(arg, value(), parse_cull_mode, "none, cw or ccw");
-    } else if (arg == "--light") {
-      settings.draw.light_direction = parse_vector(arg, value());
-    } else if (arg == "--isa") {
-      set_isa(parse_isa_option(value()));
-    } else if (arg == "--reference") {
-      set_isa(Isa::reference);
-    } else if (arg == "--texture") {
-      texture_source = std::string(value());
-      if (texture_source->empty()) throw UsageError("--texture needs a file name or checker");
-    } else if (parse_texture_option(arg, value, texture)) {
-      if (first_texture_option.empty()) first_texture_option = arg;
-      filter_given = filter_given || arg == "--filter";
-    } else if (arg == "--repeat") {
-      settings.repeat = Values::integer_in(arg, value(), 1, kMaxRepeat);
-    } else if (arg == "-o") {
-      const std::string_view path = value();
-      image_format_for(path);  // refuse an unknown extension before any work
-      settings.output = std::string(path);
-    } else if (arg == "--compare-isas") {
-      settings.compare_isas = true;
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw UsageError("unknown option " + quoted(arg));
-    } else {
-      throw UsageError("unexpected argument " + quoted(arg));
-    }
+std::vector<std::string> usage_lines() {
+  return {"[--obj FILE | --scene default|sphere|torus|ground] [options]"};
+}
+
+void add_options(CLI::App& app, RenderCommandLine& line) {
+  RenderSettings& settings = line.settings;
+  app.description(
+      "Renders a mesh with edgewise::draw() and prints the pipeline's counts and stage times.");
+  app.add_option("--obj", settings.obj_path, "the mesh to draw, an OBJ file")->type_name("FILE");
+  std::vector<std::string> scenes(std::begin(kBuiltinSceneNames), std::end(kBuiltinSceneNames));
+  tools::add_named_option(
+      app, "--scene", settings.scene_name, scenes, [](const std::string& name) { return name; },
+      "a built-in scene (default default)");
+  add_camera_options(app, settings.camera);
+  add_pipeline_options(app, line);
+  add_texture_options(app, line);
+  add_running_options(app, settings);
+}
+
+RenderSettings checked_settings(const CLI::App& app, RenderCommandLine line) {
+  RenderSettings settings = std::move(line.settings);
+  settings.draw.isa = line.isa;
+  if (settings.obj_path && app.count("--scene") > 0) {
+    throw UsageError("give either --obj or --scene, not both");
   }
-  if (settings.obj_path && scene_given) throw UsageError("give either --obj or --scene, not both");
-  if (settings.compare_isas && (isa_given || settings.output || texture.each_filter)) {
+  if (settings.compare_isas && (line.isa || settings.output || line.texture.each_filter)) {
     throw UsageError("--compare-isas takes no --isa, --reference, -o or --each-filter");
   }
-  if (!texture_source) {
-    if (!first_texture_option.empty()) {
-      throw UsageError(first_texture_option + " needs --texture FILE|checker");
+  if (!line.texture_source) {
+    // The first option given that needs --texture.
+    for (const CLI::Option* option : app.parse_order()) {
+      if (option->get_group() == kTextureGroup) {
+        throw UsageError(option->get_name() + " needs --texture FILE|checker");
+      }
     }
     return settings;
   }
-  if (texture.each_filter && filter_given) {
+  if (line.texture.each_filter && app.count("--filter") > 0) {
     throw UsageError("--each-filter renders every filter; give no --filter");
   }
-  texture.source = std::move(*texture_source);
-  settings.texture = std::move(texture);
+  line.texture.source = std::move(*line.texture_source);
+  settings.texture = std::move(line.texture);
   return settings;
 }
 

@@ -1,21 +1,23 @@
-// edgewise-render's command line: every option parsed and range-checked up front, so that a typo
-// costs no loading or rendering. Mistakes throw UsageError naming the option and the value.
+// edgewise-render's command line (CLI11): every option parsed and range-checked up front, so that
+// a typo costs no loading or rendering. Mistakes throw UsageError (common/usage_error.hpp) naming
+// the option and the value.
 #pragma once
+
+#include <CLI/CLI.hpp>
 
 #include <cstdint>
 #include <optional>
-#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "edgewise/draw.hpp"
+#include "edgewise/isa.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
 
 namespace edgewise::render_tool {
-
-extern const std::string_view kUsage;
 
 // Camera values given on the command line; the others come from the scene (camera_setup.hpp).
 struct CameraOverrides {
@@ -67,7 +69,6 @@ struct RenderSettings {
   int repeat = 1;
   std::optional<std::string> output;  // -o
   bool compare_isas = false;
-  bool help = false;
 };
 
 inline constexpr int kMaxRepeat = 10000;
@@ -75,7 +76,21 @@ inline constexpr int kMaxRepeat = 10000;
 // (16384 x 16384) the tool refuses, rather than let the system's out-of-memory killer decide.
 inline constexpr std::int64_t kMaxPixels = std::int64_t{1} << 28;
 
-RenderSettings parse_command_line(std::span<char* const> args);
+// What the options fill in as CLI11 parses them; checked_settings() makes the settings of it.
+struct RenderCommandLine {
+  RenderSettings settings;
+  std::optional<Isa> isa;                     // --isa or --reference
+  std::optional<std::string> texture_source;  // --texture
+  TextureSettings texture;                    // the options after --texture, given or not
+};
+
+// The usage lines after the tool's name, for --help.
+std::vector<std::string> usage_lines();
+// Adds edgewise-render's options to `app`; they fill `line` when it parses.
+void add_options(CLI::App& app, RenderCommandLine& line);
+// The settings, once `app` has parsed the command line into `line`. Throws UsageError for options
+// that do not go together.
+RenderSettings checked_settings(const CLI::App& app, RenderCommandLine line);
 
 std::string_view cull_mode_name(CullMode mode);
 

@@ -1,4 +1,4 @@
-// Writing a rendered Framebuffer to an image file through OpenImageIO.
+// Writing a rendered Framebuffer to an image file (common/image_file.hpp, OpenImageIO).
 //
 //   .png  8-bit RGBA, the framebuffer's bytes as they are (linear values v / 255).
 //   .exr  32-bit float channels R, G, B, A (v / 255) and Z, the depth buffer (z/w in [0, 1],

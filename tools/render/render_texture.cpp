@@ -57,7 +57,7 @@ std::string describe_texture(const RenderTexture& texture, const TextureSettings
   if (t.summed_area_table() != nullptr) out << ", summed-area table";
   out << "\n            filter ";
   if (settings.each_filter) {
-    out << "each of " << std::size(kEveryTextureFilter);
+    out << "each of " << values_of<TextureFilter>().size();
   } else {
     out << name_of(sampler.filter);
   }

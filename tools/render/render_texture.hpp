@@ -13,16 +13,6 @@
 
 namespace edgewise::render_tool {
 
-// Every TextureFilter in the enum's order: --each-filter's runs, --filter's list of names.
-inline constexpr TextureFilter kEveryTextureFilter[] = {
-    TextureFilter::nearest,         TextureFilter::bilinear,    TextureFilter::bicubic_catmull_rom,
-    TextureFilter::bicubic_bspline, TextureFilter::mip_nearest, TextureFilter::trilinear,
-    TextureFilter::supersample,     TextureFilter::ripmap,      TextureFilter::summed_area,
-    TextureFilter::anisotropic,     TextureFilter::ewa,
-};
-static_assert(std::size(kEveryTextureFilter) == static_cast<std::size_t>(TextureFilter::ewa) + 1,
-              "a filter is missing from kEveryTextureFilter");
-
 // The built-in checkerboard: 1024 texels a side, so that on the ground plane (one texture
 // repeat per 4 units) texels reach about a pixel near the eye and every mip level is used
 // towards the horizon; 8 x 8 squares of 128 texels, sharp edges that alias without filtering.

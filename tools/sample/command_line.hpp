@@ -1,19 +1,18 @@
-// edgewise-sample's command line: every option parsed and range-checked before any file is
-// touched. Mistakes throw UsageError naming the option and the value.
+// edgewise-sample's command line (CLI11): every option parsed and range-checked before any file
+// is touched. Mistakes throw UsageError (common/usage_error.hpp) naming the option and the value.
 #pragma once
 
+#include <CLI/CLI.hpp>
+
 #include <optional>
-#include <span>
 #include <string>
-#include <string_view>
+#include <vector>
 
 #include "edgewise/isa.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 
 namespace edgewise::sample_tool {
-
-extern const std::string_view kUsage;
 
 struct SampleSettings {
   std::string texture_path;  // --texture
@@ -23,13 +22,12 @@ struct SampleSettings {
   PyramidFilter pyramid = PyramidFilter::box;  // --pyramid
   bool srgb = false;                           // --srgb
   std::optional<Isa> isa;                      // --isa or --reference; otherwise active_isa()
-  bool help = false;
 };
 
-SampleSettings parse_command_line(std::span<char* const> args);
-
-// The ISA to run: the one named on the command line, or active_isa(). Throws UsageError when
-// EDGEWISE_ISA names an ISA this machine cannot run.
-Isa resolve_isa(const SampleSettings& settings);
+// The usage lines after the tool's name, for --help.
+std::vector<std::string> usage_lines();
+// Adds edgewise-sample's options to `app`; they fill `settings` when it parses (--wrap-s and
+// --wrap-t win over --wrap wherever they stand).
+void add_options(CLI::App& app, SampleSettings& settings);
 
 }  // namespace edgewise::sample_tool

@@ -1,13 +1,13 @@
-// edgewise-texture-quality's command line: every option parsed and range-checked before any
-// texture is built or ground truth computed. Mistakes throw UsageError naming the option and
-// the value.
+// edgewise-texture-quality's command line (CLI11): every option parsed and range-checked before
+// any texture is built or ground truth computed. Mistakes throw UsageError
+// (common/usage_error.hpp) naming the option and the value.
 #pragma once
+
+#include <CLI/CLI.hpp>
 
 #include <cstdint>
 #include <optional>
-#include <span>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "edgewise/isa.hpp"
@@ -16,8 +16,6 @@
 #include "texture_quality/scenes.hpp"
 
 namespace edgewise::texture_quality {
-
-extern const std::string_view kUsage;
 
 // The results of a screen are held in memory several times over (queries, results, ground
 // truth): beyond 2^24 pixels (4096 x 4096) the tool refuses; the ground truth of such a screen
@@ -40,10 +38,12 @@ struct QualitySettings {
   std::optional<std::string> cache_directory;   // --cache; otherwise default_cache_directory()
   std::optional<std::string> csv_path;          // --csv
   std::optional<std::string> images_directory;  // --images
-  bool help = false;
 };
 
-QualitySettings parse_command_line(std::span<char* const> args);
+// The usage lines after the tool's name, for --help.
+std::vector<std::string> usage_lines();
+// Adds edgewise-texture-quality's options to `app`; they fill `settings` when it parses.
+void add_options(CLI::App& app, QualitySettings& settings);
 
 // The ISAs to run, in the order given: those named on the command line, or active_isa(). Throws
 // UsageError when EDGEWISE_ISA names an ISA this machine cannot run.

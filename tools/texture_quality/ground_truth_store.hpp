@@ -26,7 +26,8 @@ struct StoredGroundTruth {
 // The whole screen's ground truth for `texture` seen through `view` with repeat wrap, read from
 // `directory` when a file with its fingerprint is there, otherwise computed (with the default
 // GroundTruthOptions) and stored. `name` (letters, digits, '_') starts the file's name. Says on
-// `log` which it does, and how long the computation took. Throws std::runtime_error when the
+// `log` which it does, and how long the computation took; while it computes, a terminal on
+// standard error shows the rows done (common/progress.hpp). Throws std::runtime_error when the
 // file cannot be written.
 StoredGroundTruth load_or_compute_ground_truth(const std::filesystem::path& directory,
                                                const std::string& name,

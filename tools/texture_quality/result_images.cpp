@@ -1,13 +1,11 @@
 #include "texture_quality/result_images.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <stdexcept>
 #include <vector>
 
+#include "common/image_file.hpp"
 #include "edgewise/texture.hpp"
 
 namespace edgewise::texture_quality {
@@ -31,14 +29,13 @@ void write_srgb_png(const std::filesystem::path& path, const texture_scene::Line
     for (int c = 0; c < 3; ++c)
       rgb[3 * i + c] = srgb_byte(image.rgba[4 * i + c]);
   }
-  std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path.string());
-  if (!output) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", "sRGB");
-  if (!output->open(path.string(), spec) ||
-      !output->write_image(OIIO::TypeDesc::UINT8, rgb.data()) || !output->close()) {
-    throw std::runtime_error(path.string() + ": " + output->geterror());
-  }
+  tools::ImagePixels encoded;
+  encoded.width = image.width;
+  encoded.height = image.height;
+  encoded.channels = 3;
+  encoded.bytes = rgb;
+  encoded.srgb = true;
+  tools::write_image_file(path.string(), encoded);
 }
 
 texture_scene::LinearImage error_image(const texture_scene::LinearImage& result,

@@ -14,7 +14,7 @@ namespace edgewise::texture_quality {
 
 inline constexpr float kErrorImageGain = 8.0f;
 
-// Throws std::runtime_error("PATH: reason") when the file cannot be written.
+// Throws std::runtime_error("PATH: cannot write: reason") when the file cannot be written.
 void write_srgb_png(const std::filesystem::path& path, const texture_scene::LinearImage& image);
 
 // |result - truth| * kErrorImageGain per channel (alpha 1). Throws std::invalid_argument when

@@ -1,13 +1,13 @@
-// Wall-clock time of a piece of work, as the median of several runs: on a shared machine a
-// single run may be slowed by other jobs, and the median ignores the outliers that a mean would
-// average in.
+// The median of measured times, and the median wall-clock time of a piece of work: on a shared
+// machine a single run may be slowed by other jobs, and the median ignores the outliers that a
+// mean would average in.
 #pragma once
 
 #include <chrono>
 #include <span>
 #include <vector>
 
-namespace edgewise::texture_quality {
+namespace edgewise::tools {
 
 // The middle value (the mean of the two middle ones for an even count). Throws
 // std::invalid_argument for no values.
@@ -26,4 +26,4 @@ double median_seconds(int repetitions, Work&& work) {
   return median(seconds);
 }
 
-}  // namespace edgewise::texture_quality
+}  // namespace edgewise::tools

@@ -1,9 +1,9 @@
-#include "texture_quality/median_time.hpp"
+#include "common/median.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-namespace edgewise::texture_quality {
+namespace edgewise::tools {
 
 double median(std::span<const double> values) {
   if (values.empty()) throw std::invalid_argument("median: no values");
@@ -13,4 +13,4 @@ double median(std::span<const double> values) {
   return sorted.size() % 2 == 1 ? sorted[middle] : 0.5 * (sorted[middle - 1] + sorted[middle]);
 }
 
-}  // namespace edgewise::texture_quality
+}  // namespace edgewise::tools
