@@ -11,23 +11,17 @@
 #include "texture_scene/ground_truth_cache.hpp"
 
 namespace edgewise::texture_quality {
-namespace {
 
-// Rows per ground_truth() call: 8 per thread. The threads take a band's rows one at a time, so at
-// the band's end one of them waits for the other's last row, about half a row's time: 6% of the
-// band's (neighbouring rows cost about the same). The progress moves every few seconds even on
-// the far rows of a full-HD ground plane.
-std::int32_t band_rows() {
+std::int32_t default_band_rows() {
   return 8 * static_cast<std::int32_t>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-// texture_scene::ground_truth() of `region`, computed a band of rows at a time to show its
-// progress: every pixel is computed on its own, so the result is the one call's, the report
-// merged from the bands' (seconds: the whole computation's).
 texture_scene::GroundTruth banded_ground_truth(const texture_scene::LinearImage& texture,
                                                const texture_scene::TextureView& view,
                                                const texture_scene::ScreenRegion& region,
-                                               const texture_scene::GroundTruthOptions& options) {
+                                               const texture_scene::GroundTruthOptions& options,
+                                               std::int32_t band_rows) {
+  if (band_rows < 1) throw std::invalid_argument("banded_ground_truth: band_rows < 1");
   const auto start = std::chrono::steady_clock::now();
   texture_scene::GroundTruth truth;
   truth.region = region;
@@ -35,10 +29,10 @@ texture_scene::GroundTruth banded_ground_truth(const texture_scene::LinearImage&
   truth.grid.assign(static_cast<std::size_t>(region.width) * region.height, 0);
   texture_scene::GroundTruthReport& report = truth.report;
   tools::Progress progress("  ground truth", region.height, "rows");
-  for (std::int32_t first = 0; first < region.height; first += band_rows()) {
+  for (std::int32_t first = 0; first < region.height; first += band_rows) {
     progress.update(first);
     const texture_scene::ScreenRegion band_region{region.x0, region.y0 + first, region.width,
-                                                  std::min(band_rows(), region.height - first)};
+                                                  std::min(band_rows, region.height - first)};
     const texture_scene::GroundTruth band = texture_scene::ground_truth(
         texture, WrapMode::repeat, WrapMode::repeat, view, band_region, options);
     std::copy(
@@ -59,8 +53,6 @@ texture_scene::GroundTruth banded_ground_truth(const texture_scene::LinearImage&
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return truth;
 }
-
-}  // namespace
 
 StoredGroundTruth load_or_compute_ground_truth(const std::filesystem::path& directory,
                                                const std::string& name,
@@ -90,7 +82,7 @@ StoredGroundTruth load_or_compute_ground_truth(const std::filesystem::path& dire
   }
   log << "  ground truth: computing " << region.width << "x" << region.height
       << " pixels (minutes for a full-HD ground plane)..." << std::endl;
-  stored.truth = banded_ground_truth(texture, view, region, options);
+  stored.truth = banded_ground_truth(texture, view, region, options, default_band_rows());
   texture_scene::write_ground_truth(stored.file, stored.truth, fingerprint);
   stored.computed = true;
   log << "  ground truth computed in ";

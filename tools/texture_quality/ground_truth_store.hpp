@@ -4,6 +4,7 @@
 // stale file.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -34,5 +35,19 @@ StoredGroundTruth load_or_compute_ground_truth(const std::filesystem::path& dire
                                                const texture_scene::LinearImage& texture,
                                                const texture_scene::TextureView& view,
                                                std::ostream& log);
+
+// texture_scene::ground_truth() of `region` with repeat wrap, computed `band_rows` rows at a time
+// to show its progress: every pixel is computed on its own, so the image and the grid are the
+// one call's, the report merged from the bands' (seconds: the whole computation's). Throws
+// std::invalid_argument when band_rows < 1.
+texture_scene::GroundTruth banded_ground_truth(const texture_scene::LinearImage& texture,
+                                               const texture_scene::TextureView& view,
+                                               const texture_scene::ScreenRegion& region,
+                                               const texture_scene::GroundTruthOptions& options,
+                                               std::int32_t band_rows);
+// 8 rows per hardware thread: ground_truth()'s threads take a band's rows one at a time, so at
+// a band's end one waits for the other's last row, about 6% of the band's time, and the progress
+// moves every few seconds even on the far rows of a full-HD ground plane.
+std::int32_t default_band_rows();
 
 }  // namespace edgewise::texture_quality
