@@ -105,8 +105,22 @@ class ShadingVisitor {
       return;
     }
     Floats stored_max(-std::numeric_limits<float>::infinity());  // depth after the writes
-    // The dx term of the depth formula for the tile's columns (exact dx, one rounding each).
     Floats depth_columns[kParts];
+    set_up_tile_columns(px, depth_columns);
+    alignas(64) float colour_row_bases[kPlanes][kTileSize];
+    if (colour_planes_) set_up_colour_rows(py, colour_row_bases);
+    if (textured_) {
+      shade_textured_rows(mask, depth, color, px, py, depth_columns, colour_row_bases, stored_max);
+    } else {
+      shade_rows(mask, depth, color, px, py, depth_columns, colour_row_bases, stored_max);
+    }
+    // The tile's largest depth, over all 64 values after the writes: its new bound.
+    if (keep_bounds_) batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
+  }
+
+  // The dx term of the depth formula for the tile's columns (exact dx, one rounding each), and
+  // the colour planes' dx terms when colour comes from planes.
+  [[gnu::always_inline]] void set_up_tile_columns(std::int32_t px, Floats depth_columns[kParts]) {
     for (std::size_t h = 0; h < kParts; ++h) {
       const Floats dx =
           interpolation_detail::lane_centers<Arch>(px + static_cast<std::int32_t>(h * kLanes)) -
@@ -117,73 +131,107 @@ class ShadingVisitor {
           colour_columns_[k][h] = Floats(plane_[k].dx) * dx;
       }
     }
-    // Each colour plane's at_vertex + dy_slope * dy for the tile's rows, a batch at a time.
-    alignas(64) float colour_row_bases[kPlanes][kTileSize];
-    if (colour_planes_) {
+  }
+
+  // Each colour plane's at_vertex + dy_slope * dy for the tile's rows, a batch at a time.
+  [[gnu::always_inline]] void set_up_colour_rows(std::int32_t py,
+                                                 float (*colour_row_bases)[kTileSize]) const {
+    for (std::size_t h = 0; h < kParts; ++h) {
+      const Floats dy =
+          interpolation_detail::lane_centers<Arch>(py + static_cast<std::int32_t>(h * kLanes)) -
+          Floats(depth_.y0);
+      for (int k = 0; k < kPlanes; ++k) {
+        (Floats(plane_[k].at_vertex) + Floats(plane_[k].dy) * dy)
+            .store_aligned(&colour_row_bases[k][h * kLanes]);
+      }
+    }
+  }
+
+  // Untextured tiles: per batch of lanes, the depth test, then the colour written where it passed.
+  [[gnu::always_inline]] void shade_rows(std::uint64_t mask, float* depth, std::uint32_t* color,
+                                         std::int32_t px, std::int32_t py,
+                                         const Floats depth_columns[kParts],
+                                         const float (*colour_row_bases)[kTileSize],
+                                         Floats& stored_max) {
+    for (int row = 0; row < kTileSize; ++row) {
+      const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
+      if (row_mask == 0) {
+        keep_row_bound(depth, row, stored_max);
+        continue;
+      }
+      const Floats row_base(detail::depth_row_base(depth_, py + row));
       for (std::size_t h = 0; h < kParts; ++h) {
-        const Floats dy =
-            interpolation_detail::lane_centers<Arch>(py + static_cast<std::int32_t>(h * kLanes)) -
-            Floats(depth_.y0);
-        for (int k = 0; k < kPlanes; ++k) {
-          (Floats(plane_[k].at_vertex) + Floats(plane_[k].dy) * dy)
-              .store_aligned(&colour_row_bases[k][h * kLanes]);
-        }
+        const Floats write =
+            depth_step(depth, row, h, row_base, depth_columns[h], row_mask, stored_max);
+        const Ints new_color = colour_planes_
+                                   ? planar_colour(colour_row_bases, row, h)
+                                   : shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_,
+                                           py + row - origin_y_);
+        write_colour(color, row, h, write, new_color);
       }
     }
-    if (textured_) {
-      // Depth first, so that only rows with pixels to write are textured; then colour.
-      Floats writes[kTileSize][kParts];
-      std::uint32_t written_rows = 0;
-      for (int row = 0; row < kTileSize; ++row) {
-        const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-        if (row_mask == 0) {
-          keep_row_bound(depth, row, stored_max);
-          continue;
-        }
-        const Floats row_base(detail::depth_row_base(depth_, py + row));
-        Floats any(0.0f);
-        for (std::size_t h = 0; h < kParts; ++h) {
-          writes[row][h] =
-              depth_step(depth, row, h, row_base, depth_columns[h], row_mask, stored_max);
-          any = any | writes[row][h];
-        }
-        if (xsimd::any(xsimd::bitwise_cast<Ints>(any) != Ints(0))) written_rows |= 1u << row;
+  }
+
+  // Textured tiles: depth first, so that only rows with pixels to write are textured; then
+  // colour.
+  [[gnu::always_inline]] void shade_textured_rows(std::uint64_t mask, float* depth,
+                                                  std::uint32_t* color, std::int32_t px,
+                                                  std::int32_t py,
+                                                  const Floats depth_columns[kParts],
+                                                  const float (*colour_row_bases)[kTileSize],
+                                                  Floats& stored_max) {
+    Floats writes[kTileSize][kParts];
+    const std::uint32_t written_rows =
+        depth_test_rows(mask, depth, py, depth_columns, stored_max, writes);
+    if (written_rows != 0) {
+      texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
+                           31 - std::countl_zero(written_rows));
+    }
+    write_textured_rows(written_rows, color, px, py, colour_row_bases, writes);
+  }
+
+  // The depth pass of a textured tile: `writes` gets the lanes to write of each covered row;
+  // returns the rows with any such lane (bit `row` for row `row`).
+  [[gnu::always_inline]] std::uint32_t depth_test_rows(std::uint64_t mask, float* depth,
+                                                       std::int32_t py,
+                                                       const Floats depth_columns[kParts],
+                                                       Floats& stored_max,
+                                                       Floats (*writes)[kParts]) {
+    std::uint32_t written_rows = 0;
+    for (int row = 0; row < kTileSize; ++row) {
+      const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
+      if (row_mask == 0) {
+        keep_row_bound(depth, row, stored_max);
+        continue;
       }
-      if (written_rows != 0) {
-        texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
-                             31 - std::countl_zero(written_rows));
+      const Floats row_base(detail::depth_row_base(depth_, py + row));
+      Floats any(0.0f);
+      for (std::size_t h = 0; h < kParts; ++h) {
+        writes[row][h] =
+            depth_step(depth, row, h, row_base, depth_columns[h], row_mask, stored_max);
+        any = any | writes[row][h];
       }
-      for (int row = 0; row < kTileSize; ++row) {
-        if ((written_rows >> row & 1u) == 0) continue;
-        for (std::size_t h = 0; h < kParts; ++h) {
-          Floats channel[4];
-          colour_channels(colour_row_bases, px, py, row, h, channel);
-          for (int k = 0; k < 4; ++k)
-            channel[k] = channel[k] * texture_.texel(k, row, h);
-          write_colour(color, row, h, writes[row][h], pack_rgba8_lanes<Arch>(channel));
-        }
-      }
-    } else {
-      for (int row = 0; row < kTileSize; ++row) {
-        const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-        if (row_mask == 0) {
-          keep_row_bound(depth, row, stored_max);
-          continue;
-        }
-        const Floats row_base(detail::depth_row_base(depth_, py + row));
-        for (std::size_t h = 0; h < kParts; ++h) {
-          const Floats write =
-              depth_step(depth, row, h, row_base, depth_columns[h], row_mask, stored_max);
-          const Ints new_color = colour_planes_
-                                     ? planar_colour(colour_row_bases, row, h)
-                                     : shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_,
-                                             py + row - origin_y_);
-          write_colour(color, row, h, write, new_color);
-        }
+      if (xsimd::any(xsimd::bitwise_cast<Ints>(any) != Ints(0))) written_rows |= 1u << row;
+    }
+    return written_rows;
+  }
+
+  // The colour pass of a textured tile: shaded colour times the sampled texel, written under
+  // `writes` in the rows of `written_rows`.
+  [[gnu::always_inline]] void write_textured_rows(std::uint32_t written_rows, std::uint32_t* color,
+                                                  std::int32_t px, std::int32_t py,
+                                                  const float (*colour_row_bases)[kTileSize],
+                                                  const Floats (*writes)[kParts]) const {
+    for (int row = 0; row < kTileSize; ++row) {
+      if ((written_rows >> row & 1u) == 0) continue;
+      for (std::size_t h = 0; h < kParts; ++h) {
+        Floats channel[4];
+        colour_channels(colour_row_bases, px, py, row, h, channel);
+        for (int k = 0; k < 4; ++k)
+          channel[k] = channel[k] * texture_.texel(k, row, h);
+        write_colour(color, row, h, writes[row][h], pack_rgba8_lanes<Arch>(channel));
       }
     }
-    // The tile's largest depth, over all 64 values after the writes: its new bound.
-    if (keep_bounds_) batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
   }
 
   // A row without covered samples: its stored depths still count towards the tile's bound.

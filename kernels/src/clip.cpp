@@ -83,6 +83,105 @@ float clamp(float v, float lo, float hi) {
   return v < lo ? lo : (v > hi ? hi : v);
 }
 
+// The two input checks run one after the other: a NaN or infinity in any vertex is reported as
+// such, even when another coordinate is also out of range.
+bool any_non_finite(const Vec4* const (&input)[3]) {
+  for (const Vec4* p : input) {
+    for (float c : {p->x, p->y, p->z, p->w}) {
+      if (!std::isfinite(c)) return true;
+    }
+  }
+  return false;
+}
+
+bool any_out_of_range(const Vec4* const (&input)[3]) {
+  for (const Vec4* p : input) {
+    for (float c : {p->x, p->y, p->z, p->w}) {
+      if (std::fabs(c) > kMaxClipCoordinate) return true;
+    }
+  }
+  return false;
+}
+
+// Each vertex's distance to `plane` into d; whether any vertex is outside it. (d is a reference
+// to the array, as in the helpers below: with pointers, GCC 12 compiled clip_triangle() to 2%
+// more instructions.)
+bool distances_to_plane(const ClipVertex* in, int count, int plane, const GuardBandPlanes& planes,
+                        float (&d)[kMaxClipVertices]) {
+  bool any_outside = false;
+  for (int i = 0; i < count; ++i) {
+    d[i] = distance(in[i].position, plane, planes);
+    any_outside = any_outside || d[i] < 0.0f;
+  }
+  return any_outside;
+}
+
+// How many edges of the closed polygon have their ends on different sides of the plane.
+int sign_changes(const float (&d)[kMaxClipVertices], int count) {
+  int changes = 0;
+  for (int i = 0; i < count; ++i) {
+    const int next = i + 1 == count ? 0 : i + 1;
+    changes += (d[i] >= 0.0f) != (d[next] >= 0.0f);
+  }
+  return changes;
+}
+
+// One Sutherland-Hodgman step: the vertices inside the plane and the crossings of the edges
+// that cross it, in the polygon's order, into out; returns their count.
+int clip_to_plane(const ClipVertex* in, const float (&d)[kMaxClipVertices], int count,
+                  ClipVertex* out) {
+  int out_count = 0;
+  for (int i = 0; i < count; ++i) {
+    const int next = i + 1 == count ? 0 : i + 1;
+    const bool inside = d[i] >= 0.0f;
+    if (inside) out[out_count++] = in[i];
+    if (inside != (d[next] >= 0.0f)) {
+      out[out_count++] = inside ? crossing(in[i], d[i], in[next], d[next])
+                                : crossing(in[next], d[next], in[i], d[i]);
+    }
+  }
+  return out_count;
+}
+
+// Clips the polygon buffers[current][0 .. count) against each plane in turn, alternating
+// between the two buffers. Returns ClipStatus::clipped with the result in
+// buffers[current][0 .. count), or why nothing is left to draw.
+ClipStatus clip_polygon(ClipVertex (&buffers)[2][kMaxClipVertices], int& count, int& current,
+                        const GuardBandPlanes& planes) {
+  for (int plane = 0; plane < kClipPlaneCount; ++plane) {
+    const ClipVertex* in = buffers[current];
+    float d[kMaxClipVertices];
+    // A plane no vertex is outside of leaves the polygon as it is: skipping it changes nothing.
+    if (!distances_to_plane(in, count, plane, planes, d)) continue;
+    // A convex polygon crosses a plane at most twice; more means its vertices are within
+    // rounding of one line, and the output could outgrow the buffers.
+    if (sign_changes(d, count) > 2) return ClipStatus::culled_degenerate;
+    count = clip_to_plane(in, d, count, buffers[current ^ 1]);
+    current ^= 1;
+    if (count < 3) return ClipStatus::outside;
+  }
+  return ClipStatus::clipped;
+}
+
+// Copies the polygon into result.vertices, each vertex clamped onto the planes; false, with the
+// vertices before it copied, at the first vertex whose w is not positive.
+bool store_clamped(const ClipVertex* polygon, int count, const GuardBandPlanes& planes,
+                   ClippedPolygon& result) {
+  for (int i = 0; i < count; ++i) {
+    ClipVertex v = polygon[i];
+    Vec4& p = v.position;
+    if (!(p.w > 0.0f)) return false;
+    // Crossings may overshoot a plane by a rounding; pull them back onto it so the guard-band
+    // bound (see the top of this file) and 0 <= depth <= 1 hold exactly. Inside vertices, and so
+    // every vertex of an unclipped triangle, are left bit for bit unchanged.
+    p.x = clamp(p.x, planes.x_min * p.w, planes.x_max * p.w);
+    p.y = clamp(p.y, planes.y_min * p.w, planes.y_max * p.w);
+    p.z = clamp(p.z, 0.0f, p.w);
+    result.vertices[i] = v;
+  }
+  return true;
+}
+
 }  // namespace
 
 GuardBandPlanes guard_band_planes(const Viewport& viewport) {
@@ -115,21 +214,13 @@ ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
   const Vec4* input[3] = {&p0, &p1, &p2};
 
   // Reject bad input before any arithmetic.
-  for (const Vec4* p : input) {
-    for (float c : {p->x, p->y, p->z, p->w}) {
-      if (!std::isfinite(c)) {
-        result.status = ClipStatus::error_non_finite;
-        return result;
-      }
-    }
+  if (any_non_finite(input)) {
+    result.status = ClipStatus::error_non_finite;
+    return result;
   }
-  for (const Vec4* p : input) {
-    for (float c : {p->x, p->y, p->z, p->w}) {
-      if (std::fabs(c) > kMaxClipCoordinate) {
-        result.status = ClipStatus::error_out_of_range;
-        return result;
-      }
-    }
+  if (any_out_of_range(input)) {
+    result.status = ClipStatus::error_out_of_range;
+    return result;
   }
 
   // Trivial reject and trivial accept from the outcodes.
@@ -147,61 +238,15 @@ ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
   const bool needs_clipping = ((c0 | c1 | c2) & kClipPlaneBits) != 0;
 
   if (needs_clipping) {
-    for (int plane = 0; plane < kClipPlaneCount; ++plane) {
-      const ClipVertex* in = buffers[current];
-      float d[kMaxClipVertices];
-      bool any_outside = false;
-      int sign_changes = 0;
-      for (int i = 0; i < count; ++i) {
-        d[i] = distance(in[i].position, plane, planes);
-        any_outside = any_outside || d[i] < 0.0f;
-      }
-      // A plane no vertex is outside of leaves the polygon as it is: skipping it changes nothing.
-      if (!any_outside) continue;
-      for (int i = 0; i < count; ++i) {
-        const int next = i + 1 == count ? 0 : i + 1;
-        sign_changes += (d[i] >= 0.0f) != (d[next] >= 0.0f);
-      }
-      // A convex polygon crosses a plane at most twice; more means its vertices are within
-      // rounding of one line, and the output could outgrow the buffers.
-      if (sign_changes > 2) {
-        result.status = ClipStatus::culled_degenerate;
-        return result;
-      }
-      ClipVertex* out = buffers[current ^ 1];
-      int out_count = 0;
-      for (int i = 0; i < count; ++i) {
-        const int next = i + 1 == count ? 0 : i + 1;
-        const bool inside = d[i] >= 0.0f;
-        if (inside) out[out_count++] = in[i];
-        if (inside != (d[next] >= 0.0f)) {
-          out[out_count++] = inside ? crossing(in[i], d[i], in[next], d[next])
-                                    : crossing(in[next], d[next], in[i], d[i]);
-        }
-      }
-      count = out_count;
-      current ^= 1;
-      if (count < 3) {
-        result.status = ClipStatus::outside;
-        return result;
-      }
-    }
-  }
-
-  for (int i = 0; i < count; ++i) {
-    ClipVertex v = buffers[current][i];
-    Vec4& p = v.position;
-    if (!(p.w > 0.0f)) {
-      result.status = ClipStatus::culled_degenerate;
+    const ClipStatus status = clip_polygon(buffers, count, current, planes);
+    if (status != ClipStatus::clipped) {
+      result.status = status;
       return result;
     }
-    // Crossings may overshoot a plane by a rounding; pull them back onto it so the guard-band
-    // bound (see the top of this file) and 0 <= depth <= 1 hold exactly. Inside vertices, and so
-    // every vertex of an unclipped triangle, are left bit for bit unchanged.
-    p.x = clamp(p.x, planes.x_min * p.w, planes.x_max * p.w);
-    p.y = clamp(p.y, planes.y_min * p.w, planes.y_max * p.w);
-    p.z = clamp(p.z, 0.0f, p.w);
-    result.vertices[i] = v;
+  }
+  if (!store_clamped(buffers[current], count, planes, result)) {
+    result.status = ClipStatus::culled_degenerate;
+    return result;
   }
   result.count = static_cast<std::uint8_t>(count);
   result.status = needs_clipping ? ClipStatus::clipped : ClipStatus::inside;
