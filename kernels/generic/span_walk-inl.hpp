@@ -112,7 +112,7 @@ inline bool span_walk_is_exact(const TriangleSetup& setup) {
 // Calls visitor.tile() for partial tiles and visitor.full_tiles() for runs of whole tiles, in
 // row order, like walk_tiles().
 template <class Arch, class Visitor>
-void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
+[[gnu::noinline]] void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
   using Spans = StripSpans<Arch>;
   const Spans spans(setup);
   const PixelRect& box = setup.box;

@@ -254,7 +254,7 @@ class TileRowWalker {
 // visitor.full_tiles(tile_x_begin, tile_x_end, tile_y, mask) for runs of tiles that share one
 // mask, in row order. Int is the type the walk steps G in: int32 when setup.narrow, else int64.
 template <class Arch, class Int, class Visitor>
-void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
+[[gnu::noinline]] void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
   const TileRowWalker<Arch, Int, Visitor> walker(setup, visitor);
   // Apart from the walker: an array indexed by column would keep the walker's members in memory.
   std::uint64_t scan_column_clip[kScanColumns];
@@ -269,9 +269,10 @@ void walk_tiles(const TriangleSetup& setup, Visitor& visitor) {
 }
 
 // A triangle whose box fits in 8x8 pixels: one block evaluated at the box's corner, then
-// split among the (up to four) tiles it overlaps. Needs setup.narrow.
+// split among the (up to four) tiles it overlaps. Needs setup.narrow. Out of line, as every
+// walk (triangle_batch-inl.hpp says why).
 template <class Arch, class Visitor>
-void walk_block(const TriangleSetup& setup, Visitor& visitor) {
+[[gnu::noinline]] void walk_block(const TriangleSetup& setup, Visitor& visitor) {
   const TileEvaluator<Arch> evaluator(setup);
   const PixelRect& box = setup.box;
   const std::int32_t dx = box.x0 - setup.origin_x, dy = box.y0 - setup.origin_y;  // 0 .. 7
