@@ -6,10 +6,10 @@
 #
 # A file reference is a `backticked` path in README.md, docs/*.md or bench/**/README.md that
 # ends in a source, script or document extension. It resolves as a path from the repository
-# root or the document's folder, as an include path (`edgewise/draw.hpp`), or as the tail of
-# exactly one source file's path (`draw.cpp` beside a full path in the same sentence is read
-# the way the sentence means it; a tail two files share is ambiguous and fails). A section citation is `docs/DESIGN.md, "Heading"` in any source
-# file of kernels/, tests/, bench/, tools/ or testing/.
+# root or the document's folder, as an include path (`edgewise/draw.hpp`), or as the tail of a
+# source file's path: of exactly one when it names a folder (`isa/draw.cpp`), of at least one
+# when it is a bare name (`summary.txt`, one per results folder). A section citation is
+# `docs/DESIGN.md, "Heading"` in any source file of kernels/, tests/, bench/, tools/ or testing/.
 # shellcheck disable=SC2016 # the backticks are Markdown's, matched literally
 set -euo pipefail
 
@@ -29,7 +29,12 @@ for document in "${documents[@]}"; do
   while read -r path; do
     [[ -e $path || -e $folder/$path || -e kernels/include/$path ]] && continue
     matches=$(grep -cE "(^|/)${path//./\\.}\$" <<<"$sources" || true)
-    ((matches == 1)) || fail "$document names \`$path\`: $matches files match"
+    # A bare name (`summary.txt`, one per results folder) may stand for several files.
+    if [[ $path == */* ]]; then
+      ((matches == 1)) || fail "$document names \`$path\`: $matches files match"
+    else
+      ((matches >= 1)) || fail "$document names \`$path\`, which does not exist"
+    fi
   done < <(grep -oE '`[A-Za-z0-9_./-]+\.(hpp|cpp|cmake|sh|py|md|txt)`' "$document" | tr -d '`' |
     sort -u)
 done
