@@ -338,7 +338,10 @@ class ShadingVisitor {
   // u = 2^-24, M = |z0| + |dzdy| max|dy| + |dzdx| max|dx| over the tile; `corner` (the computed
   // row base plus the rounded dx term, summed exactly) is within u M of the computed corner
   // depth. So every computed depth in the tile is at least corner - 7 u M; clamping to [0, 1]
-  // keeps the order. A NaN bound compares false: such a tile is never skipped.
+  // keeps the order. The margin below is 8 u M: M is itself computed from float differences
+  // (the reaches, each within a factor 1 +- u of the exact one), so the computed 7 u M could
+  // fall short of the exact one by about 14 u^2 M; the extra u M covers that many times over. A
+  // NaN bound compares false: such a tile is never skipped.
   bool hidden(float bound, std::int32_t px, std::int32_t py) const {
     const std::int32_t cx = depth_.dzdx >= 0.0f ? px : px + kTileSize - 1;
     const std::int32_t cy = depth_.dzdy >= 0.0f ? py : py + kTileSize - 1;
