@@ -340,7 +340,7 @@ class ShadingVisitor {
   // depth. So every computed depth in the tile is at least corner - 7 u M; clamping to [0, 1]
   // keeps the order. The margin below is 8 u M: M is itself computed from float differences
   // (the reaches, each within a factor 1 +- u of the exact one), so the computed 7 u M could
-  // fall short of the exact one by about 14 u^2 M; the extra u M covers that many times over. A
+  // fall short of the exact one by about 7 u^2 M; the extra u M covers that many times over. A
   // NaN bound compares false: such a tile is never skipped.
   bool hidden(float bound, std::int32_t px, std::int32_t py) const {
     const std::int32_t cx = depth_.dzdx >= 0.0f ? px : px + kTileSize - 1;
