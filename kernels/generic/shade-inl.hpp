@@ -22,6 +22,7 @@
 #include "interpolation-inl.hpp"
 #include "simd_ops-inl.hpp"
 #include "texture_tile-inl.hpp"
+#include "tile_masks-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
@@ -32,6 +33,7 @@ class ShadingVisitor {
   using Ints = xsimd::batch<std::int32_t, Arch>;
   static constexpr std::size_t kLanes = Floats::size;
   static constexpr std::size_t kParts = kTileSize / kLanes;
+  static constexpr int kPlanes = 5;  // colour planes: R, G, B, A and, for perspective, 1 / w
 
   explicit ShadingVisitor(const detail::ShadeBatch& batch)
       : batch_(batch),
@@ -60,6 +62,8 @@ class ShadingVisitor {
       if (textured_) uv[i] = batch_.uvs[corner[i]];
     }
     depth_ = detail::make_depth_plane(p, z);
+    max_vertex_depth_ = z[0] > z[1] ? z[0] : z[1];
+    max_vertex_depth_ = z[2] > max_vertex_depth_ ? z[2] : max_vertex_depth_;
     // Interpolation coordinates from a pixel corner near the triangle keep float32 exact.
     origin_x_ = static_cast<std::int32_t>(std::floor(p[0].x));
     origin_y_ = static_cast<std::int32_t>(std::floor(p[0].y));
@@ -100,35 +104,143 @@ class ShadingVisitor {
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
     const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
     fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
-    if (reject_hidden_ && hidden(batch_.tile_max_depth[tile_index], px, py)) {
+    // A tile whose bound lies above every vertex depth holds a stored depth the triangle beats
+    // (hidden() could only succeed within its rounding margin of the vertices' largest depth, and
+    // not skipping a tile is always correct): the cheap comparison spares most tiles the test.
+    if (reject_hidden_ && !(batch_.tile_max_depth[tile_index] > max_vertex_depth_) &&
+        hidden(batch_.tile_max_depth[tile_index], px, py)) {
       ++tiles_skipped_;
       return;
     }
     Floats stored_max(-std::numeric_limits<float>::infinity());  // depth after the writes
-    Floats depth_columns[kParts];
-    set_up_tile_columns(px, depth_columns);
+    ColumnTerms columns;
+    set_up_tile_columns(px, columns);
     alignas(64) float colour_row_bases[kPlanes][kTileSize];
     if (colour_planes_) set_up_colour_rows(py, colour_row_bases);
+    const std::uint32_t rows = covered_rows(mask);
     if (textured_) {
-      shade_textured_rows(mask, depth, color, px, py, depth_columns, colour_row_bases, stored_max);
+      shade_textured_rows(mask, rows, depth, color, px, py, columns, colour_row_bases, stored_max);
     } else {
-      shade_rows(mask, depth, color, px, py, depth_columns, colour_row_bases, stored_max);
+      switch (batch_.depth_test) {
+        case DepthTest::less:
+          shade_rows<DepthTest::less>(mask, rows, depth, color, px, py, columns, colour_row_bases,
+                                      stored_max);
+          break;
+        case DepthTest::less_equal:
+          shade_rows<DepthTest::less_equal>(mask, rows, depth, color, px, py, columns,
+                                            colour_row_bases, stored_max);
+          break;
+        case DepthTest::greater:
+          shade_rows<DepthTest::greater>(mask, rows, depth, color, px, py, columns,
+                                         colour_row_bases, stored_max);
+          break;
+        case DepthTest::always:
+          shade_rows<DepthTest::always>(mask, rows, depth, color, px, py, columns, colour_row_bases,
+                                        stored_max);
+          break;
+        case DepthTest::never:
+          shade_rows<DepthTest::never>(mask, rows, depth, color, px, py, columns, colour_row_bases,
+                                       stored_max);
+          break;
+      }
     }
-    // The tile's largest depth, over all 64 values after the writes: its new bound.
-    if (keep_bounds_) batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
+    if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
   }
 
-  // The dx term of the depth formula for the tile's columns (exact dx, one rounding each), and
-  // the colour planes' dx terms when colour comes from planes.
-  [[gnu::always_inline]] void set_up_tile_columns(std::int32_t px, Floats depth_columns[kParts]) {
+  // The masks of a triangle whose box fits in 8x8 pixels (walk_block) in the 2x2 tiles from
+  // (tile_x, tile_y): masks[q] for tile (tile_x + q % 2, tile_y + q / 2), any of them empty.
+  // The small-triangle path: the column and row terms are set up once for the four tiles, and
+  // only rows with covered samples are touched.
+  void tiles_2x2(std::uint32_t tile_x, std::uint32_t tile_y, const std::uint64_t (&masks)[4]) {
+    if (textured_) {
+      for (std::uint32_t q = 0; q < 4; ++q) {
+        if (masks[q] != 0) tile(tile_x + (q & 1), tile_y + (q >> 1), masks[q]);
+      }
+      return;
+    }
+    switch (batch_.depth_test) {
+      case DepthTest::less:
+        return shade_2x2<DepthTest::less>(tile_x, tile_y, masks);
+      case DepthTest::less_equal:
+        return shade_2x2<DepthTest::less_equal>(tile_x, tile_y, masks);
+      case DepthTest::greater:
+        return shade_2x2<DepthTest::greater>(tile_x, tile_y, masks);
+      case DepthTest::always:
+        return shade_2x2<DepthTest::always>(tile_x, tile_y, masks);
+      case DepthTest::never:
+        return shade_2x2<DepthTest::never>(tile_x, tile_y, masks);
+    }
+  }
+
+  template <DepthTest Test>
+  [[gnu::always_inline]] void shade_2x2(std::uint32_t tile_x, std::uint32_t tile_y,
+                                        const std::uint64_t (&masks)[4]) {
+    const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
+    const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
+    ColumnTerms columns[2];
+    set_up_tile_columns(px, columns[0]);
+    if ((masks[1] | masks[3]) != 0) set_up_tile_columns(px + kTileSize, columns[1]);
+    alignas(64) float colour_row_bases[2][kPlanes][kTileSize];
+    if (colour_planes_) {
+      set_up_colour_rows(py, colour_row_bases[0]);
+      if ((masks[2] | masks[3]) != 0) set_up_colour_rows(py + kTileSize, colour_row_bases[1]);
+    }
+    for (std::uint32_t q = 0; q < 4; ++q) {
+      const std::uint64_t mask = masks[q];
+      if (mask == 0) continue;
+      const std::uint32_t tx = tile_x + (q & 1), ty = tile_y + (q >> 1);
+      const std::size_t tile_index =
+          static_cast<std::size_t>(ty) * static_cast<std::size_t>(batch_.tiles_x) + tx;
+      float* depth = batch_.depth_tiles + tile_index * 64;
+      std::uint32_t* color = batch_.color_tiles + tile_index * 64;
+      const std::int32_t tile_px = px + static_cast<std::int32_t>(q & 1) * kTileSize;
+      const std::int32_t tile_py = py + static_cast<std::int32_t>(q >> 1) * kTileSize;
+      fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
+      if (reject_hidden_ && !(batch_.tile_max_depth[tile_index] > max_vertex_depth_) &&
+          hidden(batch_.tile_max_depth[tile_index], tile_px, tile_py)) {
+        ++tiles_skipped_;
+        continue;
+      }
+      Floats stored_max(-std::numeric_limits<float>::infinity());
+      const std::uint32_t rows = covered_rows(mask);
+      shade_rows<Test>(mask, rows, depth, color, tile_px, tile_py, columns[q & 1],
+                       colour_row_bases[q >> 1], stored_max);
+      // Under less and less_equal a write only lowers a stored depth, so the bound stays an
+      // upper bound without a look at the tile's other rows (it may be left looser than the
+      // largest depth: such a tile is skipped less often, never wrongly).
+      if constexpr (Test != DepthTest::less && Test != DepthTest::less_equal) {
+        if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
+      }
+    }
+  }
+
+  // The tile's largest depth, over all 64 values after the writes, as its new bound:
+  // `stored_max` holds the largest of the covered rows `rows`; the others kept their depths.
+  [[gnu::always_inline]] void tighten_bound(std::size_t tile_index, const float* depth,
+                                            std::uint32_t rows, Floats stored_max) const {
+    for (std::uint32_t other = ~rows & 0xFFu; other != 0; other &= other - 1)
+      keep_row_bound(depth, std::countr_zero(other), stored_max);
+    batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
+  }
+
+  // The dx terms of the depth formula and of the colour planes for the columns of the tiles
+  // starting at pixel column px.
+  struct ColumnTerms {
+    Floats depth[kParts];
+    Floats colour[kPlanes][kParts];
+  };
+
+  // The dx terms for tile columns from px (exact dx, one rounding each); the colour planes'
+  // only when colour comes from planes.
+  [[gnu::always_inline]] void set_up_tile_columns(std::int32_t px, ColumnTerms& columns) const {
     for (std::size_t h = 0; h < kParts; ++h) {
       const Floats dx =
           interpolation_detail::lane_centers<Arch>(px + static_cast<std::int32_t>(h * kLanes)) -
           Floats(depth_.x0);
-      depth_columns[h] = Floats(depth_.dzdx) * dx;
+      columns.depth[h] = Floats(depth_.dzdx) * dx;
       if (colour_planes_) {
-        for (int k = 0; k < kPlanes; ++k)
-          colour_columns_[k][h] = Floats(plane_[k].dx) * dx;
+        for (int k = 0; k < planes_used_; ++k)
+          columns.colour[k][h] = Floats(plane_[k].dx) * dx;
       }
     }
   }
@@ -140,31 +252,30 @@ class ShadingVisitor {
       const Floats dy =
           interpolation_detail::lane_centers<Arch>(py + static_cast<std::int32_t>(h * kLanes)) -
           Floats(depth_.y0);
-      for (int k = 0; k < kPlanes; ++k) {
+      for (int k = 0; k < planes_used_; ++k) {
         (Floats(plane_[k].at_vertex) + Floats(plane_[k].dy) * dy)
             .store_aligned(&colour_row_bases[k][h * kLanes]);
       }
     }
   }
 
-  // Untextured tiles: per batch of lanes, the depth test, then the colour written where it passed.
-  [[gnu::always_inline]] void shade_rows(std::uint64_t mask, float* depth, std::uint32_t* color,
-                                         std::int32_t px, std::int32_t py,
-                                         const Floats depth_columns[kParts],
+  // Untextured tiles: per covered row and batch of lanes, the depth test, then the colour
+  // written where it passed.
+  template <DepthTest Test>
+  [[gnu::always_inline]] void shade_rows(std::uint64_t mask, std::uint32_t rows, float* depth,
+                                         std::uint32_t* color, std::int32_t px, std::int32_t py,
+                                         const ColumnTerms& columns,
                                          const float (*colour_row_bases)[kTileSize],
                                          Floats& stored_max) {
-    for (int row = 0; row < kTileSize; ++row) {
+    for (; rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-      if (row_mask == 0) {
-        keep_row_bound(depth, row, stored_max);
-        continue;
-      }
       const Floats row_base(detail::depth_row_base(depth_, py + row));
       for (std::size_t h = 0; h < kParts; ++h) {
         const Floats write =
-            depth_step(depth, row, h, row_base, depth_columns[h], row_mask, stored_max);
+            depth_step<Test>(depth, row, h, row_base, columns.depth[h], row_mask, stored_max);
         const Ints new_color = colour_planes_
-                                   ? planar_colour(colour_row_bases, row, h)
+                                   ? planar_colour(colour_row_bases, columns, row, h)
                                    : shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_,
                                            py + row - origin_y_);
         write_colour(color, row, h, write, new_color);
@@ -174,41 +285,38 @@ class ShadingVisitor {
 
   // Textured tiles: depth first, so that only rows with pixels to write are textured; then
   // colour.
-  [[gnu::always_inline]] void shade_textured_rows(std::uint64_t mask, float* depth,
-                                                  std::uint32_t* color, std::int32_t px,
-                                                  std::int32_t py,
-                                                  const Floats depth_columns[kParts],
+  [[gnu::always_inline]] void shade_textured_rows(std::uint64_t mask, std::uint32_t rows,
+                                                  float* depth, std::uint32_t* color,
+                                                  std::int32_t px, std::int32_t py,
+                                                  const ColumnTerms& columns,
                                                   const float (*colour_row_bases)[kTileSize],
                                                   Floats& stored_max) {
     Floats writes[kTileSize][kParts];
     const std::uint32_t written_rows =
-        depth_test_rows(mask, depth, py, depth_columns, stored_max, writes);
+        depth_test_rows(mask, rows, depth, py, columns, stored_max, writes);
     if (written_rows != 0) {
       texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
                            31 - std::countl_zero(written_rows));
     }
-    write_textured_rows(written_rows, color, px, py, colour_row_bases, writes);
+    write_textured_rows(written_rows, color, px, py, columns, colour_row_bases, writes);
   }
 
   // The depth pass of a textured tile: `writes` gets the lanes to write of each covered row;
   // returns the rows with any such lane (bit `row` for row `row`).
-  [[gnu::always_inline]] std::uint32_t depth_test_rows(std::uint64_t mask, float* depth,
-                                                       std::int32_t py,
-                                                       const Floats depth_columns[kParts],
+  [[gnu::always_inline]] std::uint32_t depth_test_rows(std::uint64_t mask, std::uint32_t rows,
+                                                       float* depth, std::int32_t py,
+                                                       const ColumnTerms& columns,
                                                        Floats& stored_max,
                                                        Floats (*writes)[kParts]) {
     std::uint32_t written_rows = 0;
-    for (int row = 0; row < kTileSize; ++row) {
+    for (; rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-      if (row_mask == 0) {
-        keep_row_bound(depth, row, stored_max);
-        continue;
-      }
       const Floats row_base(detail::depth_row_base(depth_, py + row));
       Floats any(0.0f);
       for (std::size_t h = 0; h < kParts; ++h) {
         writes[row][h] =
-            depth_step(depth, row, h, row_base, depth_columns[h], row_mask, stored_max);
+            depth_step_any_test(depth, row, h, row_base, columns.depth[h], row_mask, stored_max);
         any = any | writes[row][h];
       }
       if (xsimd::any(xsimd::bitwise_cast<Ints>(any) != Ints(0))) written_rows |= 1u << row;
@@ -220,13 +328,14 @@ class ShadingVisitor {
   // `writes` in the rows of `written_rows`.
   [[gnu::always_inline]] void write_textured_rows(std::uint32_t written_rows, std::uint32_t* color,
                                                   std::int32_t px, std::int32_t py,
+                                                  const ColumnTerms& columns,
                                                   const float (*colour_row_bases)[kTileSize],
                                                   const Floats (*writes)[kParts]) const {
-    for (int row = 0; row < kTileSize; ++row) {
-      if ((written_rows >> row & 1u) == 0) continue;
+    for (; written_rows != 0; written_rows &= written_rows - 1) {
+      const int row = std::countr_zero(written_rows);
       for (std::size_t h = 0; h < kParts; ++h) {
         Floats channel[4];
-        colour_channels(colour_row_bases, px, py, row, h, channel);
+        colour_channels(colour_row_bases, columns, px, py, row, h, channel);
         for (int k = 0; k < 4; ++k)
           channel[k] = channel[k] * texture_.texel(k, row, h);
         write_colour(color, row, h, writes[row][h], pack_rgba8_lanes<Arch>(channel));
@@ -237,7 +346,6 @@ class ShadingVisitor {
   // A row without covered samples: its stored depths still count towards the tile's bound.
   [[gnu::always_inline]] void keep_row_bound(const float* depth, int row,
                                              Floats& stored_max) const {
-    if (!keep_bounds_) return;
     for (std::size_t h = 0; h < kParts; ++h) {
       stored_max = xsimd::max(
           stored_max,
@@ -247,6 +355,7 @@ class ShadingVisitor {
 
   // The depth test of lanes h of `row`, the depth written where it passes; returns the lanes
   // to write (all ones) as a mask.
+  template <DepthTest Test>
   [[gnu::always_inline]] Floats depth_step(float* depth, int row, std::size_t h, Floats row_base,
                                            Floats depth_column, std::uint32_t row_mask,
                                            Floats& stored_max) {
@@ -254,7 +363,7 @@ class ShadingVisitor {
     const Floats z = clamp01(row_base + depth_column);
     const Floats stored = Floats::load_aligned(depth + offset);
     const Floats covered = lane_mask(row_mask >> (h * kLanes));
-    const Floats write = covered & passes(z, stored);
+    const Floats write = covered & passes<Test>(z, stored);
     if (batch_.depth_write) {
       const Floats updated = (z & write) | (stored & ~write);
       updated.store_aligned(depth + offset);
@@ -262,6 +371,30 @@ class ShadingVisitor {
     }
     passed_ = passed_ - xsimd::bitwise_cast<Ints>(write);  // all-ones lanes are -1
     return write;
+  }
+
+  // depth_step() with the test chosen per call.
+  [[gnu::always_inline]] Floats depth_step_any_test(float* depth, int row, std::size_t h,
+                                                    Floats row_base, Floats depth_column,
+                                                    std::uint32_t row_mask, Floats& stored_max) {
+    switch (batch_.depth_test) {
+      case DepthTest::less:
+        return depth_step<DepthTest::less>(depth, row, h, row_base, depth_column, row_mask,
+                                           stored_max);
+      case DepthTest::less_equal:
+        return depth_step<DepthTest::less_equal>(depth, row, h, row_base, depth_column, row_mask,
+                                                 stored_max);
+      case DepthTest::greater:
+        return depth_step<DepthTest::greater>(depth, row, h, row_base, depth_column, row_mask,
+                                              stored_max);
+      case DepthTest::always:
+        return depth_step<DepthTest::always>(depth, row, h, row_base, depth_column, row_mask,
+                                             stored_max);
+      case DepthTest::never:
+        break;
+    }
+    return depth_step<DepthTest::never>(depth, row, h, row_base, depth_column, row_mask,
+                                        stored_max);
   }
 
   [[gnu::always_inline]] static void write_colour(std::uint32_t* color, int row, std::size_t h,
@@ -274,10 +407,11 @@ class ShadingVisitor {
   }
 
   // The shaded colour of lanes h of `row`, each channel scaled to 0 .. 255, before packing.
-  [[gnu::always_inline]] void colour_channels(const float (*row_bases)[kTileSize], std::int32_t px,
+  [[gnu::always_inline]] void colour_channels(const float (*row_bases)[kTileSize],
+                                              const ColumnTerms& columns, std::int32_t px,
                                               std::int32_t py, int row, std::size_t h,
                                               Floats channel[4]) const {
-    if (colour_planes_) return planar_channels(row_bases, row, h, channel);
+    if (colour_planes_) return planar_channels(row_bases, columns, row, h, channel);
     if (batch_.shading == Shading::flat) {
       for (int k = 0; k < 4; ++k)
         channel[k] = Floats(255.0f * (&color_[0].x)[k]);
@@ -375,19 +509,12 @@ class ShadingVisitor {
         xsimd::select((Ints(static_cast<std::int32_t>(bits)) & bit) == bit, Ints(-1), Ints(0));
     return xsimd::bitwise_cast<Floats>(set);
   }
-  [[gnu::always_inline]] Floats passes(Floats z, Floats stored) const {
-    switch (batch_.depth_test) {
-      case DepthTest::less:
-        return all_ones_where(z < stored);
-      case DepthTest::less_equal:
-        return all_ones_where(z <= stored);
-      case DepthTest::greater:
-        return all_ones_where(z > stored);
-      case DepthTest::always:
-        return xsimd::bitwise_cast<Floats>(Ints(-1));
-      case DepthTest::never:
-        break;
-    }
+  template <DepthTest Test>
+  [[gnu::always_inline]] static Floats passes(Floats z, Floats stored) {
+    if constexpr (Test == DepthTest::less) return all_ones_where(z < stored);
+    if constexpr (Test == DepthTest::less_equal) return all_ones_where(z <= stored);
+    if constexpr (Test == DepthTest::greater) return all_ones_where(z > stored);
+    if constexpr (Test == DepthTest::always) return xsimd::bitwise_cast<Floats>(Ints(-1));
     return Floats(0.0f);
   }
 
@@ -410,7 +537,8 @@ class ShadingVisitor {
       for (int i = 0; i < 3; ++i)
         inverse_w[i] = 1.0 / screen.w[i];
     }
-    for (int k = 0; k < kPlanes; ++k) {
+    planes_used_ = perspective_ ? kPlanes : 4;
+    for (int k = 0; k < planes_used_; ++k) {
       double f[3];
       for (int i = 0; i < 3; ++i) {
         f[i] = k < 4 ? 255.0 * static_cast<double>((&color_[i].x)[k]) * inverse_w[i] : inverse_w[i];
@@ -421,18 +549,20 @@ class ShadingVisitor {
       plane_[k].dy = area != 0.0 ? static_cast<float>((f2 * x1 - f1 * x2) / area) : 0.0f;
     }
   }
-  [[gnu::always_inline]] Ints planar_colour(const float (*row_bases)[kTileSize], int row,
+  [[gnu::always_inline]] Ints planar_colour(const float (*row_bases)[kTileSize],
+                                            const ColumnTerms& columns, int row,
                                             std::size_t h) const {
     Floats channel[4];
-    planar_channels(row_bases, row, h, channel);
+    planar_channels(row_bases, columns, row, h, channel);
     return pack_rgba8_lanes<Arch>(channel);
   }
-  [[gnu::always_inline]] void planar_channels(const float (*row_bases)[kTileSize], int row,
-                                              std::size_t h, Floats channel[4]) const {
+  [[gnu::always_inline]] void planar_channels(const float (*row_bases)[kTileSize],
+                                              const ColumnTerms& columns, int row, std::size_t h,
+                                              Floats channel[4]) const {
     for (int k = 0; k < 4; ++k)
-      channel[k] = Floats(row_bases[k][row]) + colour_columns_[k][h];
+      channel[k] = Floats(row_bases[k][row]) + columns.colour[k][h];
     if (perspective_) {
-      const Floats w = Floats(1.0f) / (Floats(row_bases[4][row]) + colour_columns_[4][h]);
+      const Floats w = Floats(1.0f) / (Floats(row_bases[4][row]) + columns.colour[4][h]);
       for (int k = 0; k < 4; ++k)
         channel[k] = channel[k] * w;
     }
@@ -480,15 +610,15 @@ class ShadingVisitor {
   ScreenInterpolator<Arch, Method> interpolator_;
   PerspectiveDivide<Arch> divide_;
   detail::DepthPlane depth_{};
+  float max_vertex_depth_ = 0.0f;
   Vec4 color_[3]{};
   Vec3 normal_[3]{};
   std::uint32_t flat_color_ = 0;
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
-  static constexpr int kPlanes = 5;  // R, G, B, A and, for perspective, 1 / w
   bool colour_planes_ = false;
   Plane plane_[kPlanes]{};
-  Floats colour_columns_[kPlanes][kParts];
+  int planes_used_ = 4;  // the fifth, 1 / w, only for perspective-correct colour
   std::uint64_t fragments_ = 0;
   std::uint64_t tiles_skipped_ = 0;
   bool keep_bounds_ = false, reject_hidden_ = false;

@@ -20,4 +20,16 @@ inline std::uint64_t column_bits(int first, int end) {
   return byte * 0x0101010101010101ull;
 }
 
+// Bit y set when row y of `mask` has any bit set. Each row's bits are first folded into its
+// lowest bit (bit 8y); multiplying by the constant then moves bit 8y to bit 56 + y (it adds
+// copies shifted by 7k + 7 for k = 0 .. 7, and 8y + 7k + 7 = 56 + y exactly when k = 7 - y),
+// and no two (y, k) pairs meet at one bit, so nothing carries.
+inline std::uint32_t covered_rows(std::uint64_t mask) {
+  mask |= mask >> 4;
+  mask |= mask >> 2;
+  mask |= mask >> 1;
+  mask &= 0x0101010101010101ull;
+  return static_cast<std::uint32_t>((mask * 0x0102040810204080ull) >> 56);
+}
+
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

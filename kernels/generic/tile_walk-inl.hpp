@@ -288,12 +288,16 @@ template <class Arch, class Visitor>
   const std::uint32_t tx = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
   const std::uint32_t ty = static_cast<std::uint32_t>(setup.origin_y / kTileSize);
   const int shift_down = 8 * dy;
-  if (const std::uint64_t m = left << shift_down) visitor.tile(tx, ty, m);
-  if (const std::uint64_t m = right << shift_down) visitor.tile(tx + 1, ty, m);
-  if (dy != 0) {
-    const int shift_up = 8 * (kTileSize - dy);  // 8 .. 56
-    if (const std::uint64_t m = left >> shift_up) visitor.tile(tx, ty + 1, m);
-    if (const std::uint64_t m = right >> shift_up) visitor.tile(tx + 1, ty + 1, m);
+  const int shift_up = 8 * (kTileSize - dy);  // 8 .. 64: used only when dy != 0
+  const std::uint64_t masks[4] = {left << shift_down, right << shift_down,
+                                  dy == 0 ? 0 : left >> shift_up, dy == 0 ? 0 : right >> shift_up};
+  // Visitors with a small-triangle path take the four masks at once.
+  if constexpr (requires { visitor.tiles_2x2(tx, ty, masks); }) {
+    visitor.tiles_2x2(tx, ty, masks);
+  } else {
+    for (std::uint32_t q = 0; q < 4; ++q) {
+      if (masks[q] != 0) visitor.tile(tx + (q & 1), ty + (q >> 1), masks[q]);
+    }
   }
 }
 
