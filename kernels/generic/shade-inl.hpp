@@ -20,6 +20,7 @@
 #include "../src/depth_plane.hpp"
 #include "../src/shade_batch.hpp"
 #include "interpolation-inl.hpp"
+#include "plane_setup-inl.hpp"
 #include "simd_ops-inl.hpp"
 #include "texture_tile-inl.hpp"
 #include "tile_masks-inl.hpp"
@@ -31,17 +32,68 @@ class ShadingVisitor {
  public:
   using Floats = xsimd::batch<float, Arch>;
   using Ints = xsimd::batch<std::int32_t, Arch>;
+  using Mask = xsimd::batch_bool<float, Arch>;
   static constexpr std::size_t kLanes = Floats::size;
   static constexpr std::size_t kParts = kTileSize / kLanes;
-  static constexpr int kPlanes = 5;  // colour planes: R, G, B, A and, for perspective, 1 / w
+  static constexpr int kPlanes = kColourPlanes;
 
   explicit ShadingVisitor(const detail::ShadeBatch& batch)
       : batch_(batch),
         interpolator_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, 0.0, 0.0),
         divide_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}),
-        textured_(batch.texture_description != nullptr) {}
+        colour_planes_(Method == InterpolationMethod::plane_equations &&
+                       batch.shading == Shading::gouraud),
+        keep_bounds_(batch.tile_max_depth != nullptr && batch.depth_write),
+        reject_hidden_(
+            batch.tile_max_depth != nullptr && batch.hierarchical_depth &&
+            (batch.depth_test == DepthTest::less || batch.depth_test == DepthTest::less_equal)),
+        textured_(batch.texture_description != nullptr) {
+    // Model no more than the scene needs: Gouraud colour by plane equations interpolates the
+    // colours directly, and then, untextured, needs nothing per triangle beyond the planes.
+    needs_vertices_ = textured_ || batch.normals != nullptr || !colour_planes_;
+  }
+
+  // The depth and colour planes of a group of triangles (plane_setup-inl.hpp), before
+  // begin_triangle() for each.
+  void begin_group(const GroupCorners<Arch>& corners, const TriangleGroup<Arch>& positions) {
+    group_first_ = corners.first;
+    PlaneGroupInput<Arch> in;
+    for (std::size_t l = 0; l < kSetupLanes<Arch>; ++l) {
+      for (int i = 0; i < 3; ++i) {
+        in.x[i][l] = positions.x[i][l];
+        in.y[i][l] = positions.y[i][l];
+        const bool valid = corners.valid[l];  // a bad index reads nothing; the lane is not drawn
+        const std::size_t v = corners.vertex[l][i];
+        in.z[i][l] = valid ? batch_.depth[v] : 0.0f;
+        in.w[i][l] = valid ? batch_.clip_w[v] : 1.0f;
+        if (colour_planes_) {
+          const Vec4 colour = valid ? batch_.colors[v] : Vec4{};
+          in.colour[i][0][l] = colour.x;
+          in.colour[i][1][l] = colour.y;
+          in.colour[i][2][l] = colour.z;
+          in.colour[i][3][l] = colour.w;
+        }
+      }
+    }
+    set_up_plane_group(in, colour_planes_, batch_.perspective == Perspective::correct, group_);
+  }
 
   void begin_triangle(std::uint32_t t) {
+    const std::size_t l = t - group_first_;
+    depth_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
+    max_vertex_depth_ = group_.max_depth[l];
+    if (colour_planes_) {
+      perspective_ = group_.perspective[l];
+      planes_used_ = perspective_ ? kPlanes : 4;
+      for (int k = 0; k < kPlanes; ++k)
+        plane_[k] = group_.colour[k][l];
+    }
+    if (needs_vertices_) begin_triangle_from_vertices(t);
+  }
+
+  // What the group's planes leave out: normals, texture planes, flat colour and the other
+  // interpolation methods' set-up.
+  void begin_triangle_from_vertices(std::uint32_t t) {
     std::size_t corner[3] = {3 * std::size_t{t}, 3 * std::size_t{t} + 1, 3 * std::size_t{t} + 2};
     if (batch_.coverage.indices != nullptr) {
       for (int i = 0; i < 3; ++i)
@@ -49,11 +101,9 @@ class ShadingVisitor {
     }
     Vec2 p[3];
     Vec2 uv[3]{};
-    float z[3];
     ScreenTriangle screen;
     for (int i = 0; i < 3; ++i) {
       p[i] = batch_.coverage.vertices[corner[i]];
-      z[i] = batch_.depth[corner[i]];
       screen.x[i] = p[i].x;
       screen.y[i] = p[i].y;
       screen.w[i] = batch_.clip_w[corner[i]];
@@ -61,16 +111,12 @@ class ShadingVisitor {
       if (batch_.normals != nullptr) normal_[i] = batch_.normals[corner[i]];
       if (textured_) uv[i] = batch_.uvs[corner[i]];
     }
-    depth_ = detail::make_depth_plane(p, z);
-    max_vertex_depth_ = z[0] > z[1] ? z[0] : z[1];
-    max_vertex_depth_ = z[2] > max_vertex_depth_ ? z[2] : max_vertex_depth_;
     // Interpolation coordinates from a pixel corner near the triangle keep float32 exact.
     origin_x_ = static_cast<std::int32_t>(std::floor(p[0].x));
     origin_y_ = static_cast<std::int32_t>(std::floor(p[0].y));
-    // Model no more than the scene needs: equal w (orthographic views, or a triangle facing the
-    // camera) makes perspective-correct weights equal the affine ones; flat shading needs no
-    // weights, and Gouraud colour by plane equations interpolates the colours directly.
-    // w outside [kMinClipW, kMaxClipW] (or NaN) makes the triangle affine, as in the reference.
+    // Equal w (orthographic views, or a triangle facing the camera) makes perspective-correct
+    // weights equal the affine ones; flat shading needs no weights. w outside
+    // [kMinClipW, kMaxClipW] (or NaN) makes the triangle affine, as in the reference.
     bool usable_w = true;
     for (double w : screen.w)
       usable_w = usable_w && w >= kMinClipW && w <= kMaxClipW;
@@ -81,15 +127,7 @@ class ShadingVisitor {
     if (textured_)
       texture_.begin_triangle(detail::make_texture_planes(p, uv, screen.w, batch_.perspective),
                               batch_.derivatives);
-    keep_bounds_ = batch_.tile_max_depth != nullptr && batch_.depth_write;
-    reject_hidden_ =
-        batch_.tile_max_depth != nullptr && batch_.hierarchical_depth &&
-        (batch_.depth_test == DepthTest::less || batch_.depth_test == DepthTest::less_equal);
-    colour_planes_ =
-        Method == InterpolationMethod::plane_equations && batch_.shading == Shading::gouraud;
-    if (colour_planes_) {
-      set_up_colour_planes(p, screen);
-    } else if (batch_.shading != Shading::flat) {
+    if (!colour_planes_ && batch_.shading != Shading::flat) {
       interpolator_ = ScreenInterpolator<Arch, Method>(screen, origin_x_, origin_y_);
       if (perspective_) divide_ = PerspectiveDivide<Arch>(screen);
     }
@@ -260,19 +298,79 @@ class ShadingVisitor {
   }
 
   // Untextured tiles: per covered row and batch of lanes, the depth test, then the colour
-  // written where it passed.
+  // written where it passed. Gouraud colour from planes with depth writes, the common case,
+  // has a loop of its own.
   template <DepthTest Test>
   [[gnu::always_inline]] void shade_rows(std::uint64_t mask, std::uint32_t rows, float* depth,
                                          std::uint32_t* color, std::int32_t px, std::int32_t py,
                                          const ColumnTerms& columns,
                                          const float (*colour_row_bases)[kTileSize],
                                          Floats& stored_max) {
+    if constexpr (Method == InterpolationMethod::plane_equations) {
+      if (colour_planes_ && batch_.depth_write) {
+        if (perspective_) {
+          return shade_planar_rows<Test, true>(mask, rows, depth, color, py, columns,
+                                               colour_row_bases, stored_max);
+        }
+        return shade_planar_rows<Test, false>(mask, rows, depth, color, py, columns,
+                                              colour_row_bases, stored_max);
+      }
+    }
+    shade_rows_generic<Test>(mask, rows, depth, color, px, py, columns, colour_row_bases,
+                             stored_max);
+  }
+
+  // shade_rows() for Gouraud colour from planes, depth written: the same operations as the
+  // generic loop, with the choices made once per tile and the counts kept in registers.
+  template <DepthTest Test, bool Divide>
+  [[gnu::always_inline]] void shade_planar_rows(std::uint64_t mask, std::uint32_t rows,
+                                                float* depth, std::uint32_t* color, std::int32_t py,
+                                                const ColumnTerms& columns,
+                                                const float (*colour_row_bases)[kTileSize],
+                                                Floats& stored_max) {
+    std::uint64_t passed = 0;
+    Floats largest = stored_max;
     for (; rows != 0; rows &= rows - 1) {
       const int row = std::countr_zero(rows);
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
       const Floats row_base(detail::depth_row_base(depth_, py + row));
       for (std::size_t h = 0; h < kParts; ++h) {
-        const Floats write =
+        const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
+        const Floats z = clamp01(row_base + columns.depth[h]);
+        const Floats stored = Floats::load_aligned(depth + offset);
+        const Mask write = lanes_of_bits<Arch>(row_mask >> (h * kLanes)) && passes<Test>(z, stored);
+        const Floats updated = xsimd::select(write, z, stored);
+        updated.store_aligned(depth + offset);
+        largest = xsimd::max(largest, updated);
+        passed += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
+        Floats channel[4];
+        for (int k = 0; k < 4; ++k)
+          channel[k] = Floats(colour_row_bases[k][row]) + columns.colour[k][h];
+        if constexpr (Divide) {
+          const Floats w = Floats(1.0f) / (Floats(colour_row_bases[4][row]) + columns.colour[4][h]);
+          for (int k = 0; k < 4; ++k)
+            channel[k] = channel[k] * w;
+        }
+        write_colour(color, row, h, write, pack_rgba8_lanes<Arch>(channel));
+      }
+    }
+    passed_ += passed;
+    stored_max = largest;
+  }
+
+  template <DepthTest Test>
+  [[gnu::always_inline]] void shade_rows_generic(std::uint64_t mask, std::uint32_t rows,
+                                                 float* depth, std::uint32_t* color,
+                                                 std::int32_t px, std::int32_t py,
+                                                 const ColumnTerms& columns,
+                                                 const float (*colour_row_bases)[kTileSize],
+                                                 Floats& stored_max) {
+    for (; rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
+      const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
+      const Floats row_base(detail::depth_row_base(depth_, py + row));
+      for (std::size_t h = 0; h < kParts; ++h) {
+        const Mask write =
             depth_step<Test>(depth, row, h, row_base, columns.depth[h], row_mask, stored_max);
         const Ints new_color = colour_planes_
                                    ? planar_colour(colour_row_bases, columns, row, h)
@@ -291,7 +389,7 @@ class ShadingVisitor {
                                                   const ColumnTerms& columns,
                                                   const float (*colour_row_bases)[kTileSize],
                                                   Floats& stored_max) {
-    Floats writes[kTileSize][kParts];
+    Mask writes[kTileSize][kParts];
     const std::uint32_t written_rows =
         depth_test_rows(mask, rows, depth, py, columns, stored_max, writes);
     if (written_rows != 0) {
@@ -306,20 +404,19 @@ class ShadingVisitor {
   [[gnu::always_inline]] std::uint32_t depth_test_rows(std::uint64_t mask, std::uint32_t rows,
                                                        float* depth, std::int32_t py,
                                                        const ColumnTerms& columns,
-                                                       Floats& stored_max,
-                                                       Floats (*writes)[kParts]) {
+                                                       Floats& stored_max, Mask (*writes)[kParts]) {
     std::uint32_t written_rows = 0;
     for (; rows != 0; rows &= rows - 1) {
       const int row = std::countr_zero(rows);
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
       const Floats row_base(detail::depth_row_base(depth_, py + row));
-      Floats any(0.0f);
+      std::uint32_t any = 0;
       for (std::size_t h = 0; h < kParts; ++h) {
         writes[row][h] =
             depth_step_any_test(depth, row, h, row_base, columns.depth[h], row_mask, stored_max);
-        any = any | writes[row][h];
+        any |= bits_of_lanes<Arch>(writes[row][h]);
       }
-      if (xsimd::any(xsimd::bitwise_cast<Ints>(any) != Ints(0))) written_rows |= 1u << row;
+      if (any != 0) written_rows |= 1u << row;
     }
     return written_rows;
   }
@@ -330,7 +427,7 @@ class ShadingVisitor {
                                                   std::int32_t px, std::int32_t py,
                                                   const ColumnTerms& columns,
                                                   const float (*colour_row_bases)[kTileSize],
-                                                  const Floats (*writes)[kParts]) const {
+                                                  const Mask (*writes)[kParts]) const {
     for (; written_rows != 0; written_rows &= written_rows - 1) {
       const int row = std::countr_zero(written_rows);
       for (std::size_t h = 0; h < kParts; ++h) {
@@ -354,29 +451,28 @@ class ShadingVisitor {
   }
 
   // The depth test of lanes h of `row`, the depth written where it passes; returns the lanes
-  // to write (all ones) as a mask.
+  // to write.
   template <DepthTest Test>
-  [[gnu::always_inline]] Floats depth_step(float* depth, int row, std::size_t h, Floats row_base,
-                                           Floats depth_column, std::uint32_t row_mask,
-                                           Floats& stored_max) {
+  [[gnu::always_inline]] Mask depth_step(float* depth, int row, std::size_t h, Floats row_base,
+                                         Floats depth_column, std::uint32_t row_mask,
+                                         Floats& stored_max) {
     const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
     const Floats z = clamp01(row_base + depth_column);
     const Floats stored = Floats::load_aligned(depth + offset);
-    const Floats covered = lane_mask(row_mask >> (h * kLanes));
-    const Floats write = covered & passes<Test>(z, stored);
+    const Mask write = lanes_of_bits<Arch>(row_mask >> (h * kLanes)) && passes<Test>(z, stored);
     if (batch_.depth_write) {
-      const Floats updated = (z & write) | (stored & ~write);
+      const Floats updated = xsimd::select(write, z, stored);
       updated.store_aligned(depth + offset);
       stored_max = xsimd::max(stored_max, updated);
     }
-    passed_ = passed_ - xsimd::bitwise_cast<Ints>(write);  // all-ones lanes are -1
+    passed_ += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
     return write;
   }
 
   // depth_step() with the test chosen per call.
-  [[gnu::always_inline]] Floats depth_step_any_test(float* depth, int row, std::size_t h,
-                                                    Floats row_base, Floats depth_column,
-                                                    std::uint32_t row_mask, Floats& stored_max) {
+  [[gnu::always_inline]] Mask depth_step_any_test(float* depth, int row, std::size_t h,
+                                                  Floats row_base, Floats depth_column,
+                                                  std::uint32_t row_mask, Floats& stored_max) {
     switch (batch_.depth_test) {
       case DepthTest::less:
         return depth_step<DepthTest::less>(depth, row, h, row_base, depth_column, row_mask,
@@ -397,13 +493,13 @@ class ShadingVisitor {
                                         stored_max);
   }
 
+  // Blended as floats: a blend moves bits without arithmetic, so every colour survives as is.
   [[gnu::always_inline]] static void write_colour(std::uint32_t* color, int row, std::size_t h,
-                                                  Floats write, Ints new_color) {
-    std::int32_t* at = reinterpret_cast<std::int32_t*>(
-        color + static_cast<std::size_t>(row) * kTileSize + h * kLanes);
-    const Ints write_lanes = xsimd::bitwise_cast<Ints>(write);
-    const Ints old_color = Ints::load_aligned(at);
-    ((new_color & write_lanes) | (old_color & ~write_lanes)).store_aligned(at);
+                                                  Mask write, Ints new_color) {
+    float* at =
+        reinterpret_cast<float*>(color + static_cast<std::size_t>(row) * kTileSize + h * kLanes);
+    const Floats old_color = Floats::load_aligned(at);
+    xsimd::select(write, xsimd::bitwise_cast<Floats>(new_color), old_color).store_aligned(at);
   }
 
   // The shaded colour of lanes h of `row`, each channel scaled to 0 .. 255, before packing.
@@ -429,13 +525,8 @@ class ShadingVisitor {
 
   void add_counts(detail::ShadeCounts& counts) const {
     counts.tiles_skipped += tiles_skipped_;
-    alignas(64) std::int32_t lanes[kLanes];
-    passed_.store_aligned(lanes);
-    std::uint64_t passed = 0;
-    for (std::size_t i = 0; i < kLanes; ++i)
-      passed += static_cast<std::uint32_t>(lanes[i]);
     counts.fragments += fragments_;
-    counts.passed += passed;
+    counts.passed += passed_;
   }
 
  private:
@@ -498,24 +589,13 @@ class ShadingVisitor {
 
   static double larger(double a, double b) { return a > b ? a : b; }
   static Floats clamp01(Floats z) { return xsimd::min(xsimd::max(z, Floats(0.0f)), Floats(1.0f)); }
-  static Floats all_ones_where(xsimd::batch_bool<float, Arch> condition) {
-    return xsimd::select(condition, xsimd::bitwise_cast<Floats>(Ints(-1)), Floats(0.0f));
-  }
-  // All-ones lanes where bit `lane` of `bits` is set.
-  static Floats lane_mask(std::uint32_t bits) {
-    alignas(64) static constexpr std::int32_t kBit[8] = {1, 2, 4, 8, 16, 32, 64, 128};
-    const Ints bit = Ints::load_aligned(kBit);
-    const Ints set =
-        xsimd::select((Ints(static_cast<std::int32_t>(bits)) & bit) == bit, Ints(-1), Ints(0));
-    return xsimd::bitwise_cast<Floats>(set);
-  }
   template <DepthTest Test>
-  [[gnu::always_inline]] static Floats passes(Floats z, Floats stored) {
-    if constexpr (Test == DepthTest::less) return all_ones_where(z < stored);
-    if constexpr (Test == DepthTest::less_equal) return all_ones_where(z <= stored);
-    if constexpr (Test == DepthTest::greater) return all_ones_where(z > stored);
-    if constexpr (Test == DepthTest::always) return xsimd::bitwise_cast<Floats>(Ints(-1));
-    return Floats(0.0f);
+  [[gnu::always_inline]] static Mask passes(Floats z, Floats stored) {
+    if constexpr (Test == DepthTest::less) return z < stored;
+    if constexpr (Test == DepthTest::less_equal) return z <= stored;
+    if constexpr (Test == DepthTest::greater) return z > stored;
+    if constexpr (Test == DepthTest::always) return Mask(true);
+    return Mask(false);
   }
 
   // Gouraud colour by its own plane equations (model no more than the scene needs: one add per
@@ -523,32 +603,6 @@ class ShadingVisitor {
   // value(px, py) = (at_vertex + dy_slope * dy) + dx_slope * dx with the depth formula's exact dx,
   // dy; perspective-correct, channels are planes of value / w, divided per pixel by the plane of
   // 1 / w (the fifth). Slopes come from the snapped positions in double, rounded to float once.
-  struct Plane {
-    float at_vertex, dx, dy;
-  };
-  void set_up_colour_planes(const Vec2 p[3], const ScreenTriangle& screen) {
-    const double x1 = static_cast<double>(p[1].x) - p[0].x,
-                 y1 = static_cast<double>(p[1].y) - p[0].y;
-    const double x2 = static_cast<double>(p[2].x) - p[0].x,
-                 y2 = static_cast<double>(p[2].y) - p[0].y;
-    const double area = x1 * y2 - y1 * x2;
-    double inverse_w[3] = {1.0, 1.0, 1.0};
-    if (perspective_) {
-      for (int i = 0; i < 3; ++i)
-        inverse_w[i] = 1.0 / screen.w[i];
-    }
-    planes_used_ = perspective_ ? kPlanes : 4;
-    for (int k = 0; k < planes_used_; ++k) {
-      double f[3];
-      for (int i = 0; i < 3; ++i) {
-        f[i] = k < 4 ? 255.0 * static_cast<double>((&color_[i].x)[k]) * inverse_w[i] : inverse_w[i];
-      }
-      const double f1 = f[1] - f[0], f2 = f[2] - f[0];
-      plane_[k].at_vertex = static_cast<float>(f[0]);
-      plane_[k].dx = area != 0.0 ? static_cast<float>((f1 * y2 - f2 * y1) / area) : 0.0f;
-      plane_[k].dy = area != 0.0 ? static_cast<float>((f2 * x1 - f1 * x2) / area) : 0.0f;
-    }
-  }
   [[gnu::always_inline]] Ints planar_colour(const float (*row_bases)[kTileSize],
                                             const ColumnTerms& columns, int row,
                                             std::size_t h) const {
@@ -609,6 +663,14 @@ class ShadingVisitor {
   const detail::ShadeBatch& batch_;
   ScreenInterpolator<Arch, Method> interpolator_;
   PerspectiveDivide<Arch> divide_;
+  // Fixed for the batch.
+  const bool colour_planes_;  // Gouraud colour from the group's planes
+  const bool keep_bounds_, reject_hidden_;
+  const bool textured_;
+  bool needs_vertices_ = true;  // begin_triangle() reads the vertices for more than the planes
+  // The current group's planes and triangle.
+  std::size_t group_first_ = 0;
+  PlaneGroup<Arch> group_{};
   detail::DepthPlane depth_{};
   float max_vertex_depth_ = 0.0f;
   Vec4 color_[3]{};
@@ -616,14 +678,12 @@ class ShadingVisitor {
   std::uint32_t flat_color_ = 0;
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
-  bool colour_planes_ = false;
-  Plane plane_[kPlanes]{};
+  ColourPlane plane_[kPlanes]{};
   int planes_used_ = 4;  // the fifth, 1 / w, only for perspective-correct colour
+  // Counts.
   std::uint64_t fragments_ = 0;
   std::uint64_t tiles_skipped_ = 0;
-  bool keep_bounds_ = false, reject_hidden_ = false;
-  Ints passed_ = Ints(0);
-  bool textured_ = false;
+  std::uint64_t passed_ = 0;
   TextureTile<Arch> texture_;
 };
 

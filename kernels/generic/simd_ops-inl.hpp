@@ -41,6 +41,59 @@ inline std::uint32_t sign_bits(xsimd::batch<std::int32_t, Arch> v) {
   }
 }
 
+// Lane i true where bit i of `bits` is set (the bits of kLanes lanes; higher bits ignored).
+template <class Arch>
+inline xsimd::batch_bool<float, Arch> lanes_of_bits(std::uint32_t bits) {
+  using Bools = xsimd::batch_bool<float, Arch>;
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    const __m256i set = _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), bit);
+    return Bools(_mm256_castsi256_ps(_mm256_cmpeq_epi32(set, bit)));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    const __m128i bit = _mm_setr_epi32(1, 2, 4, 8);
+    const __m128i set = _mm_and_si128(_mm_set1_epi32(static_cast<int>(bits)), bit);
+    return Bools(_mm_castsi128_ps(_mm_cmpeq_epi32(set, bit)));
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    const uint32x4_t bit = {1, 2, 4, 8};
+    return Bools(vceqq_u32(vandq_u32(vdupq_n_u32(bits), bit), bit));
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "lanes_of_bits: no implementation for this architecture");
+  }
+}
+
+// Bit i set where lane i is true: the inverse of lanes_of_bits().
+template <class Arch>
+inline std::uint32_t bits_of_lanes(xsimd::batch_bool<float, Arch> lanes) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    return static_cast<std::uint32_t>(_mm256_movemask_ps(lanes));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    return static_cast<std::uint32_t>(_mm_movemask_ps(lanes));
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    const uint32x4_t weight = {1, 2, 4, 8};
+    return vaddvq_u32(vandq_u32(lanes, weight));
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "bits_of_lanes: no implementation for this architecture");
+  }
+}
+
 // Sign bits of an 8x8 block of int32 values held as rows[row * steps + step], where each row is
 // 8 / lanes batches: bit (row * 8 + column) set when that value is negative. On x86 saturating
 // packs keep each value's sign while narrowing to bytes, so one movemask serves several rows.

@@ -34,37 +34,42 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
   constexpr std::size_t kLanes = kSetupLanes<Arch>;
   report.triangles += batch.triangle_count;
   TriangleGroup<Arch> group;
+  GroupCorners<Arch> corners;
   TriangleSetup setups[kLanes];
   TriangleStatus statuses[kLanes];
   bool visible[kLanes];
-  bool bad_index[kLanes];
   for (std::size_t first = 0; first < batch.triangle_count; first += kLanes) {
     const std::size_t count =
         batch.triangle_count - first < kLanes ? batch.triangle_count - first : kLanes;
+    corners.first = first;
     for (std::size_t l = 0; l < kLanes; ++l) {
       // Lanes past the end repeat the last triangle; their results are ignored.
       const std::size_t t = first + (l < count ? l : count - 1);
-      std::size_t corner[3] = {3 * t, 3 * t + 1, 3 * t + 2};
-      if (batch.indices != nullptr) {
-        for (int i = 0; i < 3; ++i)
-          corner[i] = batch.indices[3 * t + i];
+      std::size_t* corner = corners.vertex[l];
+      for (int i = 0; i < 3; ++i) {
+        corner[i] = batch.indices != nullptr ? batch.indices[3 * t + i] : 3 * t + i;
       }
-      bad_index[l] = false;
+      corners.valid[l] = true;
       for (int i = 0; i < 3; ++i) {
         Vec2 v{0.0f, 0.0f};
         if (corner[i] < batch.vertex_count) {
           v = batch.vertices[corner[i]];
         } else {
-          bad_index[l] = true;
+          corners.valid[l] = false;
         }
         group.x[i][l] = v.x;
         group.y[i][l] = v.y;
       }
     }
     setup_triangles<Arch>(group, batch.clip, batch.cull, setups, statuses, visible);
+    // Visitors that set up per-triangle state for a whole group do it here.
+    if constexpr (requires { visitor.begin_group(corners, group); }) {
+      visitor.begin_group(corners, group);
+    }
     for (std::size_t l = 0; l < count; ++l) {
       const std::size_t t = first + l;
-      const TriangleStatus status = bad_index[l] ? TriangleStatus::error_bad_index : statuses[l];
+      const TriangleStatus status =
+          corners.valid[l] ? statuses[l] : TriangleStatus::error_bad_index;
       if (batch.statuses != nullptr) batch.statuses[t] = status;
       if (status == TriangleStatus::drawn) {
         ++report.drawn;

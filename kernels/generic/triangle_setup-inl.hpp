@@ -70,6 +70,14 @@ struct TriangleGroup {
   alignas(64) float y[3][kSetupLanes<Arch>];
 };
 
+// The vertices of a group's triangles, lane by lane: valid when all three indices are in range.
+template <class Arch>
+struct GroupCorners {
+  std::size_t first;  // the triangle of lane 0
+  std::size_t vertex[kSetupLanes<Arch>][3];
+  bool valid[kSetupLanes<Arch>];
+};
+
 // Sets up a group of triangles at once. Every quantity of the analysis above is an integer of
 // at most 51 bits, so double lanes hold it exactly and every sum, difference and product below
 // is exact (products of two 25-bit values, sums of at most three 50-bit values); division by
