@@ -80,6 +80,7 @@ class ShadingVisitor {
 
   void begin_triangle(std::uint32_t t) {
     const std::size_t l = t - group_first_;
+    row_bases_tile_y_ = kNoTileRow;
     depth_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
     max_vertex_depth_ = group_.max_depth[l];
     if (colour_planes_) {
@@ -153,8 +154,12 @@ class ShadingVisitor {
     Floats stored_max(-std::numeric_limits<float>::infinity());  // depth after the writes
     ColumnTerms columns;
     set_up_tile_columns(px, columns);
-    alignas(64) float colour_row_bases[kPlanes][kTileSize];
-    if (colour_planes_) set_up_colour_rows(py, colour_row_bases);
+    // The walks deliver a triangle's tiles row by row: the row terms serve a whole tile row.
+    if (colour_planes_ && tile_y != row_bases_tile_y_) {
+      set_up_colour_rows(py, row_bases_);
+      row_bases_tile_y_ = tile_y;
+    }
+    const float(*colour_row_bases)[kTileSize] = row_bases_;
     const std::uint32_t rows = covered_rows(mask);
     if (textured_) {
       shade_textured_rows(mask, rows, depth, color, px, py, columns, colour_row_bases, stored_max);
@@ -308,12 +313,20 @@ class ShadingVisitor {
                                          Floats& stored_max) {
     if constexpr (Method == InterpolationMethod::plane_equations) {
       if (colour_planes_ && batch_.depth_write) {
-        if (perspective_) {
-          return shade_planar_rows<Test, true>(mask, rows, depth, color, py, columns,
-                                               colour_row_bases, stored_max);
+        if (mask == ~std::uint64_t{0}) {
+          if (perspective_) {
+            return shade_planar_rows<Test, true, true>(mask, rows, depth, color, py, columns,
+                                                       colour_row_bases, stored_max);
+          }
+          return shade_planar_rows<Test, false, true>(mask, rows, depth, color, py, columns,
+                                                      colour_row_bases, stored_max);
         }
-        return shade_planar_rows<Test, false>(mask, rows, depth, color, py, columns,
-                                              colour_row_bases, stored_max);
+        if (perspective_) {
+          return shade_planar_rows<Test, true, false>(mask, rows, depth, color, py, columns,
+                                                      colour_row_bases, stored_max);
+        }
+        return shade_planar_rows<Test, false, false>(mask, rows, depth, color, py, columns,
+                                                     colour_row_bases, stored_max);
       }
     }
     shade_rows_generic<Test>(mask, rows, depth, color, px, py, columns, colour_row_bases,
@@ -321,8 +334,9 @@ class ShadingVisitor {
   }
 
   // shade_rows() for Gouraud colour from planes, depth written: the same operations as the
-  // generic loop, with the choices made once per tile and the counts kept in registers.
-  template <DepthTest Test, bool Divide>
+  // generic loop, with the choices made once per tile and the counts kept in registers. A full
+  // tile (every sample covered) runs all eight rows without lane masks.
+  template <DepthTest Test, bool Divide, bool Full>
   [[gnu::always_inline]] void shade_planar_rows(std::uint64_t mask, std::uint32_t rows,
                                                 float* depth, std::uint32_t* color, std::int32_t py,
                                                 const ColumnTerms& columns,
@@ -330,15 +344,16 @@ class ShadingVisitor {
                                                 Floats& stored_max) {
     std::uint64_t passed = 0;
     Floats largest = stored_max;
-    for (; rows != 0; rows &= rows - 1) {
-      const int row = std::countr_zero(rows);
+    for (int next = 0; Full ? next < kTileSize : rows != 0; ++next, rows &= rows - 1) {
+      const int row = Full ? next : std::countr_zero(rows);
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
       const Floats row_base(detail::depth_row_base(depth_, py + row));
       for (std::size_t h = 0; h < kParts; ++h) {
         const std::size_t offset = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
         const Floats z = clamp01(row_base + columns.depth[h]);
         const Floats stored = Floats::load_aligned(depth + offset);
-        const Mask write = lanes_of_bits<Arch>(row_mask >> (h * kLanes)) && passes<Test>(z, stored);
+        Mask write = passes<Test>(z, stored);
+        if constexpr (!Full) write = write && lanes_of_bits<Arch>(row_mask >> (h * kLanes));
         const Floats updated = xsimd::select(write, z, stored);
         updated.store_aligned(depth + offset);
         largest = xsimd::max(largest, updated);
@@ -679,6 +694,10 @@ class ShadingVisitor {
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
   ColourPlane plane_[kPlanes]{};
+  // The colour planes' row terms for the tile row row_bases_tile_y_ (set_up_colour_rows()).
+  static constexpr std::uint32_t kNoTileRow = UINT32_MAX;
+  std::uint32_t row_bases_tile_y_ = kNoTileRow;
+  alignas(64) float row_bases_[kPlanes][kTileSize];
   int planes_used_ = 4;  // the fifth, 1 / w, only for perspective-correct colour
   // Counts.
   std::uint64_t fragments_ = 0;
