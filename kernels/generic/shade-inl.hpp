@@ -563,14 +563,7 @@ class ShadingVisitor {
     }
   }
 
-  static float horizontal_max(Floats v) {
-    alignas(64) float lanes[kLanes];
-    v.store_aligned(lanes);
-    float m = lanes[0];
-    for (std::size_t i = 1; i < kLanes; ++i)
-      m = lanes[i] > m ? lanes[i] : m;
-    return m;
-  }
+  static float horizontal_max(Floats v) { return lane_max<Arch>(v); }
 
   // Whether the depth test fails at every sample of the tile at (px, py). The plane's exact
   // value over the tile's samples is smallest at the corner its slopes point away from. Each

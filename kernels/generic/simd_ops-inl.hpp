@@ -94,6 +94,32 @@ inline std::uint32_t bits_of_lanes(xsimd::batch_bool<float, Arch> lanes) {
   }
 }
 
+// The largest lane (for NaN-free lanes; with NaN, some lane's value or NaN), by halving.
+template <class Arch>
+inline float lane_max(xsimd::batch<float, Arch> v) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    __m128 m = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    const __m128 m = _mm_max_ps(v, _mm_movehl_ps(v, v));
+    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vmaxvq_f32(v);
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "lane_max: no implementation for this architecture");
+  }
+}
+
 // Sign bits of an 8x8 block of int32 values held as rows[row * steps + step], where each row is
 // 8 / lanes batches: bit (row * 8 + column) set when that value is negative. On x86 saturating
 // packs keep each value's sign while narrowing to bytes, so one movemask serves several rows.

@@ -301,4 +301,51 @@ template <class Arch, class Visitor>
   }
 }
 
+// A triangle whose box fits in 16x16 pixels: up to four 8x8 blocks evaluated from the box's
+// corner, their samples gathered into the (up to) 3x3 tiles they overlap, and the tiles handed
+// on in row order as walk_tiles() would. Needs setup.narrow: every sample lies within the reach
+// of the overflow analysis (box corner + 15 < origin + 31). Out of line, as every walk.
+template <class Arch, class Visitor>
+[[gnu::noinline]] void walk_block_16(const TriangleSetup& setup, Visitor& visitor) {
+  const TileEvaluator<Arch> evaluator(setup);
+  const PixelRect& box = setup.box;
+  const std::int32_t dx = box.x0 - setup.origin_x, dy = box.y0 - setup.origin_y;  // 0 .. 7
+  const std::int32_t width = box.x1 - box.x0, height = box.y1 - box.y0;           // 1 .. 16
+  std::uint64_t tiles[3][3] = {};
+  for (std::int32_t by = 0; by < 2; ++by) {
+    const std::int32_t rows =
+        height - kTileSize * by < kTileSize ? height - kTileSize * by : kTileSize;
+    if (rows <= 0) break;
+    for (std::int32_t bx = 0; bx < 2; ++bx) {
+      const std::int32_t columns =
+          width - kTileSize * bx < kTileSize ? width - kTileSize * bx : kTileSize;
+      if (columns <= 0) break;
+      std::int32_t g[3];
+      for (int e = 0; e < 3; ++e) {
+        g[e] = static_cast<std::int32_t>(setup.edge[e].g) +
+               setup.edge[e].a * (dx + kTileSize * bx) + setup.edge[e].b * (dy + kTileSize * by);
+      }
+      const std::uint64_t block =
+          evaluator.coverage(g) & row_bits(0, rows) & column_bits(0, columns);
+      // Block column c lands in column c + dx of tile column bx, c + dx - 8 of the next one;
+      // block row r in row r + dy of tile row by, r + dy - 8 of the next.
+      const std::uint64_t left = (block & column_bits(0, kTileSize - dx)) << dx;
+      const std::uint64_t right = dx == 0 ? 0 : (block >> (kTileSize - dx)) & column_bits(0, dx);
+      tiles[by][bx] |= left << (8 * dy);
+      tiles[by][bx + 1] |= right << (8 * dy);
+      if (dy != 0) {
+        tiles[by + 1][bx] |= left >> (8 * (kTileSize - dy));
+        tiles[by + 1][bx + 1] |= right >> (8 * (kTileSize - dy));
+      }
+    }
+  }
+  const std::uint32_t tx = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
+  const std::uint32_t ty = static_cast<std::uint32_t>(setup.origin_y / kTileSize);
+  for (std::uint32_t row = 0; row < 3; ++row) {
+    for (std::uint32_t column = 0; column < 3; ++column) {
+      if (tiles[row][column] != 0) visitor.tile(tx + column, ty + row, tiles[row][column]);
+    }
+  }
+}
+
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

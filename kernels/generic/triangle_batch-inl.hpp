@@ -79,6 +79,9 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
         const PixelRect& box = setup.box;
         if (setup.narrow && box.x1 - box.x0 <= kTileSize && box.y1 - box.y0 <= kTileSize) {
           walk_block<Arch>(setup, visitor);
+        } else if (setup.narrow && box.x1 - box.x0 <= 2 * kTileSize &&
+                   box.y1 - box.y0 <= 2 * kTileSize) {
+          walk_block_16<Arch>(setup, visitor);
         } else if (prefers_span_walk(box) && span_walk_is_exact(setup)) {
           walk_spans<Arch>(setup, visitor);
         } else if (setup.narrow) {
