@@ -190,69 +190,82 @@ class ShadingVisitor {
     if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
   }
 
-  // The masks of a triangle whose box fits in 8x8 pixels (walk_block) in the 2x2 tiles from
-  // (tile_x, tile_y): masks[q] for tile (tile_x + q % 2, tile_y + q / 2), any of them empty.
-  // The small-triangle path: the column and row terms are set up once for the four tiles, and
-  // only rows with covered samples are touched.
-  void tiles_2x2(std::uint32_t tile_x, std::uint32_t tile_y, const std::uint64_t (&masks)[4]) {
+  // The masks of a small triangle (walk_block, walk_block_16) in the N x N tiles from
+  // (tile_x, tile_y): masks[row][column] for tile (tile_x + column, tile_y + row), any of them
+  // empty. The small-triangle path: the column and row terms are set up once per tile column
+  // and row, and only rows with covered samples are touched.
+  template <std::size_t N>
+  void tile_grid(std::uint32_t tile_x, std::uint32_t tile_y, const std::uint64_t (&masks)[N][N]) {
     if (textured_) {
-      for (std::uint32_t q = 0; q < 4; ++q) {
-        if (masks[q] != 0) tile(tile_x + (q & 1), tile_y + (q >> 1), masks[q]);
+      for (std::uint32_t row = 0; row < N; ++row) {
+        for (std::uint32_t column = 0; column < N; ++column) {
+          if (masks[row][column] != 0) tile(tile_x + column, tile_y + row, masks[row][column]);
+        }
       }
       return;
     }
     switch (batch_.depth_test) {
       case DepthTest::less:
-        return shade_2x2<DepthTest::less>(tile_x, tile_y, masks);
+        return shade_grid<DepthTest::less>(tile_x, tile_y, masks);
       case DepthTest::less_equal:
-        return shade_2x2<DepthTest::less_equal>(tile_x, tile_y, masks);
+        return shade_grid<DepthTest::less_equal>(tile_x, tile_y, masks);
       case DepthTest::greater:
-        return shade_2x2<DepthTest::greater>(tile_x, tile_y, masks);
+        return shade_grid<DepthTest::greater>(tile_x, tile_y, masks);
       case DepthTest::always:
-        return shade_2x2<DepthTest::always>(tile_x, tile_y, masks);
+        return shade_grid<DepthTest::always>(tile_x, tile_y, masks);
       case DepthTest::never:
-        return shade_2x2<DepthTest::never>(tile_x, tile_y, masks);
+        return shade_grid<DepthTest::never>(tile_x, tile_y, masks);
     }
   }
 
-  template <DepthTest Test>
-  [[gnu::always_inline]] void shade_2x2(std::uint32_t tile_x, std::uint32_t tile_y,
-                                        const std::uint64_t (&masks)[4]) {
+  template <DepthTest Test, std::size_t N>
+  [[gnu::always_inline]] void shade_grid(std::uint32_t tile_x, std::uint32_t tile_y,
+                                         const std::uint64_t (&masks)[N][N]) {
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
     const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
-    ColumnTerms columns[2];
-    set_up_tile_columns(px, columns[0]);
-    if ((masks[1] | masks[3]) != 0) set_up_tile_columns(px + kTileSize, columns[1]);
-    alignas(64) float colour_row_bases[2][kPlanes][kTileSize];
-    if (colour_planes_) {
-      set_up_colour_rows(py, colour_row_bases[0]);
-      if ((masks[2] | masks[3]) != 0) set_up_colour_rows(py + kTileSize, colour_row_bases[1]);
-    }
-    for (std::uint32_t q = 0; q < 4; ++q) {
-      const std::uint64_t mask = masks[q];
-      if (mask == 0) continue;
-      const std::uint32_t tx = tile_x + (q & 1), ty = tile_y + (q >> 1);
-      const std::size_t tile_index =
-          static_cast<std::size_t>(ty) * static_cast<std::size_t>(batch_.tiles_x) + tx;
-      float* depth = batch_.depth_tiles + tile_index * 64;
-      std::uint32_t* color = batch_.color_tiles + tile_index * 64;
-      const std::int32_t tile_px = px + static_cast<std::int32_t>(q & 1) * kTileSize;
-      const std::int32_t tile_py = py + static_cast<std::int32_t>(q >> 1) * kTileSize;
-      fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
-      if (reject_hidden_ && !(batch_.tile_max_depth[tile_index] > max_vertex_depth_) &&
-          hidden(batch_.tile_max_depth[tile_index], tile_px, tile_py)) {
-        ++tiles_skipped_;
-        continue;
+    std::uint64_t in_column[N] = {}, in_row[N] = {};
+    for (std::size_t row = 0; row < N; ++row) {
+      for (std::size_t column = 0; column < N; ++column) {
+        in_column[column] |= masks[row][column];
+        in_row[row] |= masks[row][column];
       }
-      Floats stored_max(-std::numeric_limits<float>::infinity());
-      const std::uint32_t rows = covered_rows(mask);
-      shade_rows<Test>(mask, rows, depth, color, tile_px, tile_py, columns[q & 1],
-                       colour_row_bases[q >> 1], stored_max);
-      // Under less and less_equal a write only lowers a stored depth, so the bound stays an
-      // upper bound without a look at the tile's other rows (it may be left looser than the
-      // largest depth: such a tile is skipped less often, never wrongly).
-      if constexpr (Test != DepthTest::less && Test != DepthTest::less_equal) {
-        if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
+    }
+    ColumnTerms columns[N];
+    for (std::size_t column = 0; column < N; ++column) {
+      if (in_column[column] != 0) {
+        set_up_tile_columns(px + static_cast<std::int32_t>(column) * kTileSize, columns[column]);
+      }
+    }
+    alignas(64) float colour_row_bases[kPlanes][kTileSize];
+    for (std::uint32_t row = 0; row < N; ++row) {
+      if (in_row[row] == 0) continue;
+      const std::int32_t tile_py = py + static_cast<std::int32_t>(row) * kTileSize;
+      if (colour_planes_) set_up_colour_rows(tile_py, colour_row_bases);
+      for (std::uint32_t column = 0; column < N; ++column) {
+        const std::uint64_t mask = masks[row][column];
+        if (mask == 0) continue;
+        const std::size_t tile_index =
+            static_cast<std::size_t>(tile_y + row) * static_cast<std::size_t>(batch_.tiles_x) +
+            tile_x + column;
+        const std::int32_t tile_px = px + static_cast<std::int32_t>(column) * kTileSize;
+        fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
+        if (reject_hidden_ && !(batch_.tile_max_depth[tile_index] > max_vertex_depth_) &&
+            hidden(batch_.tile_max_depth[tile_index], tile_px, tile_py)) {
+          ++tiles_skipped_;
+          continue;
+        }
+        float* depth = batch_.depth_tiles + tile_index * 64;
+        std::uint32_t* color = batch_.color_tiles + tile_index * 64;
+        Floats stored_max(-std::numeric_limits<float>::infinity());
+        const std::uint32_t rows = covered_rows(mask);
+        shade_rows<Test>(mask, rows, depth, color, tile_px, tile_py, columns[column],
+                         colour_row_bases, stored_max);
+        // Under less and less_equal a write only lowers a stored depth, so the bound stays an
+        // upper bound without a look at the tile's other rows (it may be left looser than the
+        // largest depth: such a tile is skipped less often, never wrongly).
+        if constexpr (Test != DepthTest::less && Test != DepthTest::less_equal) {
+          if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
+        }
       }
     }
   }

@@ -268,6 +268,24 @@ template <class Arch, class Int, class Visitor>
   }
 }
 
+// Hands the masks of an N x N grid of tiles from (tile_x, tile_y) to the visitor: whole, to a
+// visitor with a small-triangle path (tile_grid), else tile by tile in row order.
+template <std::size_t N, class Visitor>
+[[gnu::always_inline]] inline void deliver_tile_grid(std::uint32_t tile_x, std::uint32_t tile_y,
+                                                     const std::uint64_t (&masks)[N][N],
+                                                     Visitor& visitor) {
+  if constexpr (requires { visitor.tile_grid(tile_x, tile_y, masks); }) {
+    visitor.tile_grid(tile_x, tile_y, masks);
+  } else {
+    for (std::uint32_t row = 0; row < N; ++row) {
+      for (std::uint32_t column = 0; column < N; ++column) {
+        if (masks[row][column] != 0)
+          visitor.tile(tile_x + column, tile_y + row, masks[row][column]);
+      }
+    }
+  }
+}
+
 // A triangle whose box fits in 8x8 pixels: one block evaluated at the box's corner, then
 // split among the (up to four) tiles it overlaps. Needs setup.narrow. Out of line, as every
 // walk (triangle_batch-inl.hpp says why).
@@ -289,16 +307,10 @@ template <class Arch, class Visitor>
   const std::uint32_t ty = static_cast<std::uint32_t>(setup.origin_y / kTileSize);
   const int shift_down = 8 * dy;
   const int shift_up = 8 * (kTileSize - dy);  // 8 .. 64: used only when dy != 0
-  const std::uint64_t masks[4] = {left << shift_down, right << shift_down,
-                                  dy == 0 ? 0 : left >> shift_up, dy == 0 ? 0 : right >> shift_up};
-  // Visitors with a small-triangle path take the four masks at once.
-  if constexpr (requires { visitor.tiles_2x2(tx, ty, masks); }) {
-    visitor.tiles_2x2(tx, ty, masks);
-  } else {
-    for (std::uint32_t q = 0; q < 4; ++q) {
-      if (masks[q] != 0) visitor.tile(tx + (q & 1), ty + (q >> 1), masks[q]);
-    }
-  }
+  const std::uint64_t masks[2][2] = {
+      {left << shift_down, right << shift_down},
+      {dy == 0 ? 0 : left >> shift_up, dy == 0 ? 0 : right >> shift_up}};
+  deliver_tile_grid(tx, ty, masks, visitor);
 }
 
 // A triangle whose box fits in 16x16 pixels: up to four 8x8 blocks evaluated from the box's
@@ -341,11 +353,7 @@ template <class Arch, class Visitor>
   }
   const std::uint32_t tx = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
   const std::uint32_t ty = static_cast<std::uint32_t>(setup.origin_y / kTileSize);
-  for (std::uint32_t row = 0; row < 3; ++row) {
-    for (std::uint32_t column = 0; column < 3; ++column) {
-      if (tiles[row][column] != 0) visitor.tile(tx + column, ty + row, tiles[row][column]);
-    }
-  }
+  deliver_tile_grid(tx, ty, tiles, visitor);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE
