@@ -142,6 +142,8 @@ def collect(results, pattern, key):
 def print_context(path, data, results):
     context = data.get("context", {})
     repetitions = next((e["repetitions"] for e in results.values() if "repetitions" in e), 1)
+    if "cpu" in context:  # bench/run records which CPU ran
+        print(f"{path}: CPU {context['cpu']}")
     print(f"{path}: host {context.get('host_name', '?')}, {context.get('num_cpus', '?')} CPUs at "
           f"{context.get('mhz_per_cpu', '?')} MHz, {context.get('date', '?')}; median of "
           f"{repetitions} repetitions (CPU time; cv: their coefficient of variation); active ISA "
