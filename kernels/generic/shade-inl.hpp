@@ -237,10 +237,10 @@ class ShadingVisitor {
       }
     }
     alignas(64) float colour_row_bases[kPlanes][kTileSize];
+    std::uint32_t set_up_row = N;  // the tile row colour_row_bases holds
     for (std::uint32_t row = 0; row < N; ++row) {
       if (in_row[row] == 0) continue;
       const std::int32_t tile_py = py + static_cast<std::int32_t>(row) * kTileSize;
-      if (colour_planes_) set_up_colour_rows(tile_py, colour_row_bases);
       for (std::uint32_t column = 0; column < N; ++column) {
         const std::uint64_t mask = masks[row][column];
         if (mask == 0) continue;
@@ -258,8 +258,19 @@ class ShadingVisitor {
         std::uint32_t* color = batch_.color_tiles + tile_index * 64;
         Floats stored_max(-std::numeric_limits<float>::infinity());
         const std::uint32_t rows = covered_rows(mask);
-        shade_rows<Test>(mask, rows, depth, color, tile_px, tile_py, columns[column],
-                         colour_row_bases, stored_max);
+        // A box of at most 8x8 pixels covers at most 8 rows in all: its row terms are computed
+        // per row; larger boxes set them up per tile row.
+        if constexpr (N == 2) {
+          shade_rows<Test, true>(mask, rows, depth, color, tile_px, tile_py, columns[column],
+                                 nullptr, stored_max);
+        } else {
+          if (colour_planes_ && set_up_row != row) {
+            set_up_colour_rows(tile_py, colour_row_bases);
+            set_up_row = row;
+          }
+          shade_rows<Test>(mask, rows, depth, color, tile_px, tile_py, columns[column],
+                           colour_row_bases, stored_max);
+        }
         // Under less and less_equal a write only lowers a stored depth, so the bound stays an
         // upper bound without a look at the tile's other rows (it may be left looser than the
         // largest depth: such a tile is skipped less often, never wrongly).
@@ -317,8 +328,10 @@ class ShadingVisitor {
 
   // Untextured tiles: per covered row and batch of lanes, the depth test, then the colour
   // written where it passed. Gouraud colour from planes with depth writes, the common case,
-  // has a loop of its own.
-  template <DepthTest Test>
+  // has a loop of its own. The colour planes' row terms come from `colour_row_bases`, or, with
+  // RowTermsPerRow (small triangles, which cover few of a tile's rows), are computed per
+  // covered row with the same float operations.
+  template <DepthTest Test, bool RowTermsPerRow = false>
   [[gnu::always_inline]] void shade_rows(std::uint64_t mask, std::uint32_t rows, float* depth,
                                          std::uint32_t* color, std::int32_t px, std::int32_t py,
                                          const ColumnTerms& columns,
@@ -328,19 +341,24 @@ class ShadingVisitor {
       if (colour_planes_ && batch_.depth_write) {
         if (mask == ~std::uint64_t{0}) {
           if (perspective_) {
-            return shade_planar_rows<Test, true, true>(mask, rows, depth, color, py, columns,
-                                                       colour_row_bases, stored_max);
+            return shade_planar_rows<Test, true, true, RowTermsPerRow>(
+                mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
           }
-          return shade_planar_rows<Test, false, true>(mask, rows, depth, color, py, columns,
-                                                      colour_row_bases, stored_max);
+          return shade_planar_rows<Test, false, true, RowTermsPerRow>(
+              mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
         }
         if (perspective_) {
-          return shade_planar_rows<Test, true, false>(mask, rows, depth, color, py, columns,
-                                                      colour_row_bases, stored_max);
+          return shade_planar_rows<Test, true, false, RowTermsPerRow>(
+              mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
         }
-        return shade_planar_rows<Test, false, false>(mask, rows, depth, color, py, columns,
-                                                     colour_row_bases, stored_max);
+        return shade_planar_rows<Test, false, false, RowTermsPerRow>(
+            mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
       }
+    }
+    alignas(64) float row_bases[kPlanes][kTileSize];
+    if constexpr (RowTermsPerRow) {
+      if (colour_planes_) set_up_colour_rows(py, row_bases);
+      colour_row_bases = row_bases;
     }
     shade_rows_generic<Test>(mask, rows, depth, color, px, py, columns, colour_row_bases,
                              stored_max);
@@ -349,7 +367,7 @@ class ShadingVisitor {
   // shade_rows() for Gouraud colour from planes, depth written: the same operations as the
   // generic loop, with the choices made once per tile and the counts kept in registers. A full
   // tile (every sample covered) runs all eight rows without lane masks.
-  template <DepthTest Test, bool Divide, bool Full>
+  template <DepthTest Test, bool Divide, bool Full, bool RowTermsPerRow>
   [[gnu::always_inline]] void shade_planar_rows(std::uint64_t mask, std::uint32_t rows,
                                                 float* depth, std::uint32_t* color, std::int32_t py,
                                                 const ColumnTerms& columns,
@@ -371,11 +389,21 @@ class ShadingVisitor {
         updated.store_aligned(depth + offset);
         largest = xsimd::max(largest, updated);
         passed += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
+        float row_term[kPlanes];
+        for (int k = 0; k < (Divide ? kPlanes : 4); ++k) {
+          if constexpr (RowTermsPerRow) {
+            // set_up_colour_rows()'s operations for this one row.
+            const float dy = (static_cast<float>(py + row) + 0.5f) - depth_.y0;
+            row_term[k] = plane_[k].at_vertex + plane_[k].dy * dy;
+          } else {
+            row_term[k] = colour_row_bases[k][row];
+          }
+        }
         Floats channel[4];
         for (int k = 0; k < 4; ++k)
-          channel[k] = Floats(colour_row_bases[k][row]) + columns.colour[k][h];
+          channel[k] = Floats(row_term[k]) + columns.colour[k][h];
         if constexpr (Divide) {
-          const Floats w = Floats(1.0f) / (Floats(colour_row_bases[4][row]) + columns.colour[4][h]);
+          const Floats w = Floats(1.0f) / (Floats(row_term[4]) + columns.colour[4][h]);
           for (int k = 0; k < 4; ++k)
             channel[k] = channel[k] * w;
         }
