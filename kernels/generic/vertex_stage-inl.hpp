@@ -3,8 +3,9 @@
 //   i, so no vertex is looked up or remapped, and each vertex's class is kept as a code;
 // - every triangle in the mesh's order, a block of one triangle per lane at a time: when the
 //   codes of a block's corners say that all its triangles are inside every clipping plane (the
-//   common case), its indices are stored as they are; otherwise its triangles are taken one by
-//   one, in order, by the shared scalar add_triangle(), which clips where it must.
+//   common case), its indices are stored as they are (a run of such blocks at once); otherwise
+//   its triangles are taken one by one, in order, by the shared scalar add_triangle(), which
+//   clips where it must.
 // The results equal the reference's (kernels/reference/vertex_stage_reference.cpp) bit for bit.
 #pragma once
 
@@ -72,34 +73,25 @@ inline void add_triangle_by_codes(const detail::VertexStageCall& call, const std
   detail::add_triangle(call, corner, triangle, out, report);
 }
 
-// Triangles [first, first + lanes) of an unindexed mesh, stored whole when every corner is
-// inside; false (nothing done) otherwise. Their corners are the 3 lanes vertices from 3 first.
+// Whether the block of triangles [first, first + lanes) of an unindexed mesh passes whole: its
+// corners, the 3 lanes vertices from 3 first, all inside.
 template <class Arch>
-[[gnu::always_inline]] inline bool pass_unindexed_block(const std::int32_t* codes,
-                                                        std::size_t first,
-                                                        detail::ScreenMesh& out) {
+[[gnu::always_inline]] inline bool unindexed_block_passes(const std::int32_t* codes,
+                                                          std::size_t first) {
   using Ints = xsimd::batch<std::int32_t, Arch>;
   constexpr std::size_t kLanes = Ints::size;
   const std::int32_t* corners = codes + 3 * first;
   const Ints any = Ints::load_unaligned(corners) | Ints::load_unaligned(corners + kLanes) |
                    Ints::load_unaligned(corners + 2 * kLanes);
-  if (xsimd::any(any != Ints(0))) return false;
-  static constexpr std::int32_t kLaneIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-  static_assert(kLanes <= 8);
-  const Ints index = Ints::load_unaligned(kLaneIndex) + Ints(static_cast<std::int32_t>(3 * first));
-  auto* at = reinterpret_cast<std::int32_t*>(out.indices.extend(3 * kLanes));
-  index.store_unaligned(at);
-  (index + Ints(static_cast<std::int32_t>(kLanes))).store_unaligned(at + kLanes);
-  (index + Ints(static_cast<std::int32_t>(2 * kLanes))).store_unaligned(at + 2 * kLanes);
-  return true;
+  return !xsimd::any(any != Ints(0));
 }
 
-// The same for an indexed mesh: its 3 lanes indices from 3 first are stored as they are when all
-// of them are in range and every corner is inside.
+// The same for an indexed mesh: its 3 lanes indices from 3 first all in range, and the corners
+// they name all inside.
 template <class Arch>
-[[gnu::always_inline]] inline bool pass_indexed_block(const detail::VertexStageCall& call,
-                                                      const std::int32_t* codes, std::size_t first,
-                                                      detail::ScreenMesh& out) {
+[[gnu::always_inline]] inline bool indexed_block_passes(const detail::VertexStageCall& call,
+                                                        const std::int32_t* codes,
+                                                        std::size_t first) {
   using Ints = xsimd::batch<std::int32_t, Arch>;
   constexpr std::size_t kLanes = Ints::size;
   // Indices as int32: the vertex count is below 2^31 (draw() checks it), so an index is in range
@@ -111,31 +103,58 @@ template <class Arch>
   const Ints lowest = xsimd::min(xsimd::min(a, b), c), highest = xsimd::max(xsimd::max(a, b), c);
   if (xsimd::any((lowest < Ints(0)) | (highest >= Ints(vertex_count)))) return false;
   const Ints any = Ints::gather(codes, a) | Ints::gather(codes, b) | Ints::gather(codes, c);
-  if (xsimd::any(any != Ints(0))) return false;
-  auto* at = reinterpret_cast<std::int32_t*>(out.indices.extend(3 * kLanes));
-  a.store_unaligned(at);
-  b.store_unaligned(at + kLanes);
-  c.store_unaligned(at + 2 * kLanes);
-  return true;
+  return !xsimd::any(any != Ints(0));
 }
 
-// Every triangle, in the mesh's order, into out.indices (and through clipping).
+// The indices of triangles [first, end), which all pass as they are: for an unindexed mesh
+// 3 first, 3 first + 1, ..., for an indexed one its own.
+template <class Arch>
+void store_passing_triangles(const detail::VertexStageCall& call, std::size_t first,
+                             std::size_t end, detail::ScreenMesh& out) {
+  std::uint32_t* at = out.indices.extend(3 * (end - first));
+  if (!call.mesh.indices.empty()) {
+    std::copy(call.mesh.indices.data() + 3 * first, call.mesh.indices.data() + 3 * end, at);
+    return;
+  }
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  constexpr std::size_t kLanes = Ints::size;
+  static constexpr std::int32_t kLaneIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  static_assert(kLanes <= 8);
+  Ints index = Ints::load_unaligned(kLaneIndex) + Ints(static_cast<std::int32_t>(3 * first));
+  const Ints step(static_cast<std::int32_t>(kLanes));
+  auto* corner = reinterpret_cast<std::int32_t*>(at);
+  for (std::size_t k = 0; k < 3 * (end - first); k += 3 * kLanes) {  // a block at a time
+    for (std::size_t batch = 0; batch < 3; ++batch, index += step)
+      index.store_unaligned(corner + k + batch * kLanes);
+  }
+}
+
+// Every triangle, in the mesh's order, into out.indices (and through clipping). A run of
+// blocks that pass whole is found first and stored at once.
 template <class Arch>
 void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t* codes,
                         detail::ScreenMesh& out, DrawReport& report) {
   constexpr std::size_t kLanes = xsimd::batch<std::int32_t, Arch>::size;
-  std::size_t t = 0;
-  const auto blocks = [&](auto pass_block) {
-    for (; t + kLanes <= call.triangles; t += kLanes) {
-      if (pass_block(t)) continue;
-      for (std::size_t k = t; k < t + kLanes; ++k)
-        add_triangle_by_codes(call, codes, k, out, report);
-    }
+  const bool indexed = !call.mesh.indices.empty();
+  const auto run_end = [&](std::size_t first, auto block_passes) {
+    std::size_t end = first;
+    while (end + kLanes <= call.triangles && block_passes(end))
+      end += kLanes;
+    return end;
   };
-  if (call.mesh.indices.empty()) {
-    blocks([&](std::size_t first) { return pass_unindexed_block<Arch>(codes, first, out); });
-  } else {
-    blocks([&](std::size_t first) { return pass_indexed_block<Arch>(call, codes, first, out); });
+  std::size_t t = 0;
+  while (t + kLanes <= call.triangles) {
+    const std::size_t end =
+        indexed
+            ? run_end(t, [&](std::size_t b) { return indexed_block_passes<Arch>(call, codes, b); })
+            : run_end(t, [&](std::size_t b) { return unindexed_block_passes<Arch>(codes, b); });
+    if (end != t) {
+      store_passing_triangles<Arch>(call, t, end, out);
+      t = end;
+      continue;
+    }
+    for (const std::size_t block_end = t + kLanes; t < block_end; ++t)
+      add_triangle_by_codes(call, codes, t, out, report);
   }
   for (; t < call.triangles; ++t)
     add_triangle_by_codes(call, codes, t, out, report);
