@@ -28,7 +28,8 @@ void map_vertices(const detail::VertexStageCall& call, detail::ScreenMesh& out,
   constexpr std::size_t kLanes = ScreenMapping<Arch>::kLanes;
   const std::size_t count = call.mesh.positions.size();
   const Vec3* in = call.mesh.positions.data();
-  // The arrays' addresses as locals: stores through them could otherwise change `out`.
+  // The arrays' addresses as locals: the compiler cannot tell that the batches stored through
+  // them leave `out` unchanged, and would load them again for every batch.
   Vec2* const positions = out.positions.data();
   float* const depth = out.depth.data();
   float* const clip_w = out.clip_w.data();

@@ -1,6 +1,6 @@
 // A growable array of trivially copyable values whose new elements are left uninitialized: for
 // outputs that a kernel writes in whole batches, where std::vector would first zero every element
-// and check its capacity on every push_back.
+// (resize) or check its capacity for each one (push_back).
 #pragma once
 
 #include <algorithm>
@@ -33,7 +33,7 @@ class GrowableArray {
     size_ += count;
     return first;
   }
-  void push_back(const T& value) { *extend(1) = value; }
+  void push_back(T value) { *extend(1) = value; }  // by value: extend() may move the array
   void reserve(std::size_t capacity) {
     if (capacity > capacity_) grow(capacity);
   }

@@ -4,6 +4,7 @@
 // and never read.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -22,16 +23,12 @@ class ScreenAttribute {
   void borrow(std::span<const T> values) { borrowed_ = values; }
   // `count` copies of `value`, owned (a mesh without colours is opaque white).
   void fill(std::size_t count, const T& value) {
-    T* first = owned_.extend(count);
-    for (std::size_t i = 0; i < count; ++i)
-      first[i] = value;
+    std::fill_n(owned_.extend(count), count, value);
     owning_ = true;
   }
-  void push_back(const T& value) {
+  void push_back(T value) {
     if (!owning_) {
-      T* first = owned_.extend(borrowed_.size());
-      for (std::size_t i = 0; i < borrowed_.size(); ++i)
-        first[i] = borrowed_[i];
+      std::copy_n(borrowed_.data(), borrowed_.size(), owned_.extend(borrowed_.size()));
       owning_ = true;
     }
     owned_.push_back(value);
