@@ -58,7 +58,7 @@ class ScreenMapping {
 
     // to_screen()
     const Floats one(1.0f), zero(0.0f);
-    const Floats inv_w = one / w;
+    const Floats inv_w = divide_exactly(one, w);
     Floats z_over_w = z * inv_w;
     z_over_w = xsimd::select(z_over_w > one, one, z_over_w);
     z_over_w = xsimd::select(z_over_w < zero, zero, z_over_w);

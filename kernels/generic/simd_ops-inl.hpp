@@ -1,5 +1,5 @@
-// The few operations xsimd 8.1 lacks, per architecture: collecting lane sign bits, and a float
-// comparison's lanes as integers.
+// The few operations xsimd 8.1 lacks, per architecture: collecting lane sign bits, a float
+// comparison's lanes as integers, and a correctly rounded division on AArch64.
 #pragma once
 
 #include <cstddef>
@@ -64,6 +64,21 @@ template <class Arch>
 #endif
   {
     static_assert(!sizeof(Arch), "mask_lanes: no implementation for this architecture");
+  }
+}
+
+// a / b, correctly rounded as the scalar division is. (xsimd 8.1 divides float batches on
+// AArch64 by a reciprocal estimate refined by Newton steps, which can differ in the last bit.)
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<float, Arch> divide_exactly(
+    xsimd::batch<float, Arch> a, xsimd::batch<float, Arch> b) {
+#if defined(__aarch64__)
+  if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vdivq_f32(a, b);
+  } else
+#endif
+  {
+    return a / b;  // divps on x86
   }
 }
 
