@@ -192,10 +192,11 @@ TEST_P(IsaForcing, KernelTableIsComplete) {
   EXPECT_NE(table.rasterize, nullptr);
   EXPECT_NE(table.count_coverage, nullptr);
   EXPECT_NE(table.transform_vertices, nullptr);
+  EXPECT_NE(table.map_to_screen, nullptr);
   EXPECT_NE(table.shade, nullptr);
   EXPECT_NE(table.sample, nullptr);
   EXPECT_NE(table.sample_fields, nullptr);
-  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 7,
+  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 8,
                 "a kernel was added to KernelTable: check it here");
 }
 

@@ -1,6 +1,7 @@
 // Batches to and from interleaved records: four channel batches stored as RGBA records (lane l's
-// four values at out + 4 l), and six-float query records loaded as one batch per field; 4 x 4
-// transposes per group of four lanes instead of a scalar move per lane and value.
+// four values at out + 4 l), two as (x, y) pairs, and records of three or six floats loaded as one
+// batch per field; register shuffles per group of four lanes instead of a scalar move per lane
+// and value.
 #pragma once
 
 #include <cstddef>
@@ -58,6 +59,85 @@ inline void store_interleaved(const xsimd::batch<float, Arch> (&channels)[4], fl
 #endif
   {
     static_assert(!sizeof(Arch), "store_interleaved: no implementation for this architecture");
+  }
+}
+
+// Records of three floats, one per lane, loaded as three batches (field f of lane l from
+// in[3 l + f]): in must hold 3 * lanes floats.
+template <class Arch>
+[[gnu::always_inline]] inline void load_interleaved3(const float* in,
+                                                     xsimd::batch<float, Arch> (&fields)[3]) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    // Records 0..3 in the low halves, 4..7 in the high halves: the shuffles of the SSE branch
+    // below, per half.
+    const auto halves = [in](int low) {
+      return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(in + low)),
+                                  _mm_loadu_ps(in + low + 12), 1);
+    };
+    const __m256 a = halves(0), b = halves(4), c = halves(8);
+    const __m256 xy = _mm256_shuffle_ps(b, c, _MM_SHUFFLE(2, 1, 3, 2));
+    const __m256 yz = _mm256_shuffle_ps(a, b, _MM_SHUFFLE(1, 0, 2, 1));
+    fields[0] = _mm256_shuffle_ps(a, xy, _MM_SHUFFLE(2, 0, 3, 0));
+    fields[1] = _mm256_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0));
+    fields[2] = _mm256_shuffle_ps(yz, c, _MM_SHUFFLE(3, 0, 3, 1));
+    return;
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    const __m128 a = _mm_loadu_ps(in), b = _mm_loadu_ps(in + 4), c = _mm_loadu_ps(in + 8);
+    // a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3
+    const __m128 xy = _mm_shuffle_ps(b, c, _MM_SHUFFLE(2, 1, 3, 2));  // x2 y2 x3 y3
+    const __m128 yz = _mm_shuffle_ps(a, b, _MM_SHUFFLE(1, 0, 2, 1));  // y0 z0 y1 z1
+    fields[0] = _mm_shuffle_ps(a, xy, _MM_SHUFFLE(2, 0, 3, 0));
+    fields[1] = _mm_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0));
+    fields[2] = _mm_shuffle_ps(yz, c, _MM_SHUFFLE(3, 0, 3, 1));
+    return;
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    const float32x4x3_t v = vld3q_f32(in);
+    fields[0] = v.val[0];
+    fields[1] = v.val[1];
+    fields[2] = v.val[2];
+    return;
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "load_interleaved3: no implementation for this architecture");
+  }
+}
+
+// Two batches stored as (x, y) pairs, lane l's at out + 2 l: out must hold 2 * lanes floats.
+template <class Arch>
+[[gnu::always_inline]] inline void store_interleaved2(xsimd::batch<float, Arch> x,
+                                                      xsimd::batch<float, Arch> y, float* out) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    const __m256 low = _mm256_unpacklo_ps(x, y);   // pairs 0, 1 | 4, 5
+    const __m256 high = _mm256_unpackhi_ps(x, y);  // pairs 2, 3 | 6, 7
+    _mm256_storeu_ps(out, _mm256_permute2f128_ps(low, high, 0x20));
+    _mm256_storeu_ps(out + 8, _mm256_permute2f128_ps(low, high, 0x31));
+    return;
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    _mm_storeu_ps(out, _mm_unpacklo_ps(x, y));
+    _mm_storeu_ps(out + 4, _mm_unpackhi_ps(x, y));
+    return;
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    vst2q_f32(out, (float32x4x2_t{{x, y}}));
+    return;
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "store_interleaved2: no implementation for this architecture");
   }
 }
 

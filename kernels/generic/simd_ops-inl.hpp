@@ -1,4 +1,6 @@
-// The few operations xsimd 8.1 lacks, per architecture: collecting lane sign bits.
+// The few operations xsimd 8.1 lacks, per architecture: collecting lane sign bits, lane masks
+// from and to bits, a float comparison's lanes as integers, and a correctly rounded division on
+// AArch64.
 #pragma once
 
 #include <cstddef>
@@ -117,6 +119,46 @@ inline float lane_max(xsimd::batch<float, Arch> v) {
 #endif
   {
     static_assert(!sizeof(Arch), "lane_max: no implementation for this architecture");
+  }
+}
+
+// The lanes of a float comparison as int32 lanes, all ones where it holds: the register itself.
+// (Selecting a constant by the mask with xsimd::select() costs GCC 12 one more compare.)
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<std::int32_t, Arch> mask_lanes(
+    xsimd::batch_bool<float, Arch> mask) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    return _mm256_castps_si256(mask);
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    return _mm_castps_si128(mask);
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vreinterpretq_s32_u32(mask);
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "mask_lanes: no implementation for this architecture");
+  }
+}
+
+// a / b, correctly rounded as the scalar division is. (xsimd 8.1 divides float batches on
+// AArch64 by a reciprocal estimate refined by Newton steps, which can differ in the last bit.)
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<float, Arch> divide_exactly(
+    xsimd::batch<float, Arch> a, xsimd::batch<float, Arch> b) {
+#if defined(__aarch64__)
+  if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vdivq_f32(a, b);
+  } else
+#endif
+  {
+    return a / b;  // divps on x86
   }
 }
 

@@ -1,9 +1,10 @@
-// The drawing kernels (draw.hpp's draw()): the vertex transform and the shading of
-// screen-space triangles, compiled once per ISA.
+// The drawing kernels (draw.hpp's draw()): the vertex transform, the vertex stage and the
+// shading of screen-space triangles, compiled once per ISA.
 #include "../src/isa_build.hpp"
 
 #include "../generic/shade-inl.hpp"
 #include "../generic/triangle_batch-inl.hpp"
+#include "../generic/vertex_stage-inl.hpp"
 #include "../generic/vertex_transform-inl.hpp"
 #include "../src/isa_kernels.hpp"
 
@@ -39,6 +40,11 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
 
 void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {
   transform_vertex_array<Arch>(m, in, count, out);
+}
+
+void map_to_screen(const detail::VertexStageCall& call, detail::ScreenMesh& out,
+                   DrawReport& report) {
+  map_mesh_to_screen<Arch>(call, out, report);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -6,9 +6,9 @@
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 const detail::KernelTable& kernel_table() {
-  static constexpr detail::KernelTable table{EDGEWISE_ISA_ENUM,   &rasterize, &count_coverage,
-                                             &transform_vertices, &shade,     &sample,
-                                             &sample_fields};
+  static constexpr detail::KernelTable table{
+      EDGEWISE_ISA_ENUM, &rasterize, &count_coverage, &transform_vertices,
+      &map_to_screen,    &shade,     &sample,         &sample_fields};
   return table;
 }
 

@@ -1,6 +1,8 @@
 // The scalar reference as a kernel table, like every ISA's: coverage, drawing and sampling by
-// the reference's plain loops (raster_reference, shade_reference, sample_reference), in exact
-// integers or double precision; sampled values are rounded to float only on the way out.
+// the reference's plain loops (raster_reference, vertex_stage_reference, shade_reference,
+// sample_reference), in exact integers or double precision where the result allows it (the
+// vertex stage's float32 results are defined by its scalar operations); sampled values are
+// rounded to float only on the way out.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -8,6 +10,7 @@
 #include "../src/kernel_table.hpp"
 #include "coverage_reference.hpp"
 #include "sample_reference.hpp"
+#include "vertex_stage_reference.hpp"
 
 namespace edgewise::isa_reference {
 namespace {
@@ -74,9 +77,14 @@ void sample_fields(const detail::TextureDescription& texture, const SamplerOptio
 }  // namespace
 
 const detail::KernelTable& kernel_table() {
-  static constexpr detail::KernelTable table{
-      Isa::reference,    &rasterize, &count_coverage, &transform_vertices,
-      &reference::shade, &sample,    &sample_fields};
+  static constexpr detail::KernelTable table{Isa::reference,
+                                             &rasterize,
+                                             &count_coverage,
+                                             &transform_vertices,
+                                             &reference::map_to_screen,
+                                             &reference::shade,
+                                             &sample,
+                                             &sample_fields};
   return table;
 }
 

@@ -3,25 +3,11 @@
 // shade_screen_mesh().
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
-#include <vector>
-
 #include "edgewise/draw.hpp"
 #include "kernel_table.hpp"
+#include "screen_mesh.hpp"
 
 namespace edgewise::detail {
-
-// Screen-space vertices and triangles, as the shading kernels take them.
-struct ScreenMesh {
-  std::vector<Vec2> positions;  // snapped to 1/256 px
-  std::vector<float> depth;
-  std::vector<float> clip_w;
-  std::vector<Vec4> colors;
-  std::vector<Vec3> normals;
-  std::vector<Vec2> uvs;  // textured draws only
-  std::vector<std::uint32_t> indices;
-};
 
 // A checked call: its ISA's kernels, the clip rectangle, and the report so far.
 struct DrawCall {
@@ -34,8 +20,8 @@ struct DrawCall {
 // Checks the arguments (draw.hpp says what throws) and chooses the ISA.
 DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
 
-// The vertex stage: transform, clipping, screen mapping and snapping of every triangle, counted
-// into call.report.
+// The vertex stage (vertex_stage.cpp, through the ISA's kernel): transform, clipping, screen
+// mapping and snapping of every triangle, counted into call.report.
 ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
                          const DrawOptions& options);
 

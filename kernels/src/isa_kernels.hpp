@@ -18,6 +18,8 @@ void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
 
 // draw.cpp
 void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);
+void map_to_screen(const detail::VertexStageCall& call, detail::ScreenMesh& out,
+                   DrawReport& report);
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
 
 // sample.cpp

@@ -11,6 +11,10 @@
 #include "isa_list.hpp"
 #include "sample_kernels.hpp"
 
+namespace edgewise {
+struct DrawReport;
+}
+
 namespace edgewise::detail {
 
 // A validated call: the target is already reduced to one clip rectangle.
@@ -26,6 +30,8 @@ struct TriangleBatch {
 
 struct ShadeBatch;
 struct ShadeCounts;
+struct VertexStageCall;
+struct ScreenMesh;
 
 struct KernelTable {
   Isa isa;  // the ISA the table's objects were compiled for
@@ -35,6 +41,10 @@ struct KernelTable {
   // Drawing (draw.hpp): the vertex transform, out[i] = transform(m, in[i]) (camera.hpp) bit
   // for bit, and the screen-space triangles shaded into the framebuffer.
   void (*transform_vertices)(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);
+  // The vertex stage (vertex_stage.hpp): every vertex transformed, classified against the
+  // clipping planes, mapped to the screen and snapped; every triangle passed on, clipped or
+  // counted out, in the mesh's order. `out` is empty on entry.
+  void (*map_to_screen)(const VertexStageCall& call, ScreenMesh& out, DrawReport& report);
   void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
   // Sampling (sample.hpp): queries and results as records, or as one array per field.
   SampleKernel sample;

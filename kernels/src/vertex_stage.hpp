@@ -1,0 +1,55 @@
+// draw()'s vertex stage, the parts every ISA and the reference share (docs/DESIGN.md, "The vertex
+// stage"): the call's inputs, the start of the screen mesh, the snapping of one coordinate, and
+// the scalar handling of one triangle, clipping included. Each ISA maps the mesh's vertices its
+// own way (kernels/generic/vertex_stage-inl.hpp; the reference's plain loops in
+// kernels/reference/vertex_stage_reference.cpp) and hands here every triangle it does not
+// pass through as it is.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "clip.hpp"
+#include "edgewise/camera.hpp"
+#include "edgewise/draw.hpp"
+#include "screen_mesh.hpp"
+
+namespace edgewise::detail {
+
+// One draw() call's vertex stage: what map_to_screen() (draw_stages.hpp) gives the kernel.
+struct VertexStageCall {
+  DrawMesh mesh;
+  Mat4 transform;
+  Viewport viewport;
+  GuardBandPlanes planes;  // guard_band_planes(viewport)
+  bool diffuse;            // the screen mesh carries normals
+  bool textured;           // the screen mesh carries texture coordinates
+  std::size_t triangles;   // in the mesh
+};
+
+// Rounds a screen coordinate to the 1/256 px grid, ties to even, as the rasterizer does
+// (docs/DESIGN.md, "Coordinates and snapping"). Values beyond 2^43 in magnitude and non-finite
+// ones pass through unchanged. Every vertex the shading kernels see has been snapped so.
+float snap(float v);
+
+// Sizes `out` for the mesh's vertices (positions, depth and w left for the caller to write),
+// borrows the mesh's attributes (opaque white when it has no colours) and reserves the indices
+// of a mesh drawn without clipping.
+void start_screen_mesh(const VertexStageCall& call, ScreenMesh& out);
+
+// What the classes of a triangle's vertices (classify_clip_vertex()) say about it, before
+// clip_triangle() is asked.
+enum class TriangleClass : std::uint8_t {
+  inside,     // every vertex inside every clipping plane: the triangle as it is
+  outside,    // every vertex outside one plane of the view frustum
+  undecided,  // clip_triangle() decides
+  bad_index,  // a corner past the end of the vertex array: an error, nothing drawn
+};
+
+// Adds mesh triangle `corner` to the screen mesh, counting what happens to it in the report as
+// draw() does: an inside one by its three vertices, an outside or bad one only counted, an
+// undecided one through clip_triangle(), whose new vertices (attributes blended) are appended.
+void add_triangle(const VertexStageCall& call, const std::uint32_t (&corner)[3],
+                  TriangleClass triangle_class, ScreenMesh& out, DrawReport& report);
+
+}  // namespace edgewise::detail
