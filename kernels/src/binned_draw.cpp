@@ -15,7 +15,7 @@
 namespace edgewise::detail {
 
 bool DrawCall::binned() const {
-  return workers.threads > 1 && BinGrid(clip).count() > 1;
+  return workers.threads > 1 && BinGrid(clip, workers.threads).count() > 1;
 }
 
 namespace {
@@ -32,8 +32,8 @@ DrawMesh triangle_range(const DrawMesh& mesh, const DrawOptions& options, std::s
   return part;
 }
 
-// Triangle counts of the binned screen triangles into the report, as the one kernel call of
-// the direct path counts them.
+// The binning's counts of the screen triangles into the report (shade_bins() adds those of the
+// triangles it left to the bins' kernel calls).
 void count_screen_triangles(DrawReport& report, std::span<const RasterReport> ranges) {
   RasterReport raster;
   for (const RasterReport& range : ranges)
@@ -43,24 +43,31 @@ void count_screen_triangles(DrawReport& report, std::span<const RasterReport> ra
   report.errors += raster.errors;
 }
 
+// What one bin's kernel calls counted.
+struct BinCounts {
+  ShadeCounts shading;
+  RasterReport
+      triangles;  // of these, only the culled ones and errors are new (bin_screen_triangles)
+};
+
 // Shades every bin, one task each: the lists of every range in range order, each through the
 // kernel with the bin as its clip rectangle, with range r's screen mesh (range_batches[r]).
 void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
                 std::span<const ShadeBatch> range_batches) {
-  std::vector<ShadeCounts> bin_counts(grid.count());
+  std::vector<BinCounts> bin_counts(grid.count());
   call.workers.run(grid.count(), [&](std::size_t bin) {
-    ShadeCounts& counts = bin_counts[bin];
-    RasterReport ignored;  // the binning counted the triangles
+    ShadeCounts& counts = bin_counts[bin].shading;
+    RasterReport& triangles = bin_counts[bin].triangles;
     const PixelRect rect = grid.rect(bin);
     bool shaded = false;
     for (std::size_t range = 0; range < range_batches.size(); ++range) {
-      const std::vector<std::uint32_t>& list = lists.list(range, bin);
+      const CornerList& list = lists.list(range, bin);
       if (list.empty()) continue;
       ShadeBatch batch = range_batches[range];
       batch.coverage.clip = rect;
       batch.coverage.indices = list.data();
-      batch.coverage.triangle_count = list.size() / 3;
-      call.kernels->shade(batch, ignored, counts);
+      batch.coverage.triangle_count = list.triangles();
+      call.kernels->shade(batch, triangles, counts);
       shaded = true;
     }
     if (!shaded) {
@@ -69,14 +76,16 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
       ShadeBatch batch = range_batches[0];
       batch.coverage.clip = rect;
       batch.coverage.triangle_count = 0;
-      call.kernels->shade(batch, ignored, counts);
+      call.kernels->shade(batch, triangles, counts);
     }
   });
   DrawReport& report = call.report;
-  for (const ShadeCounts& counts : bin_counts) {
-    report.fragments += counts.fragments;
-    report.fragments_passed += counts.passed;
-    report.tiles_skipped += counts.tiles_skipped;
+  for (const BinCounts& counts : bin_counts) {
+    report.culled += counts.triangles.culled;
+    report.errors += counts.triangles.errors;
+    report.fragments += counts.shading.fragments;
+    report.fragments_passed += counts.shading.passed;
+    report.tiles_skipped += counts.shading.tiles_skipped;
   }
 }
 
@@ -84,15 +93,16 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
 
 void shade_in_bins(DrawCall& call, Framebuffer& target, const ScreenMesh& screen,
                    const DrawOptions& options, const TextureDescription* texture) {
-  const BinGrid grid(call.clip);
+  const BinGrid grid(call.clip, call.workers.threads);
   const std::size_t triangles = screen.indices.size() / 3;
   const std::size_t ranges = binning_ranges(triangles, call.workers.threads);
   BinLists lists(ranges, grid.count());
   const ShadeBatch whole = make_shade_batch(target, screen, options, call.clip, texture);
   std::vector<RasterReport> range_reports(ranges);
   call.workers.run(ranges, [&](std::size_t range) {
-    bin_triangles(whole.coverage, range * triangles / ranges, (range + 1) * triangles / ranges,
-                  grid, lists.range_lists(range), range_reports[range]);
+    bin_screen_triangles(whole.coverage, range * triangles / ranges,
+                         (range + 1) * triangles / ranges, grid, lists.range_lists(range),
+                         range_reports[range]);
   });
   count_screen_triangles(call.report, range_reports);
   const std::vector<ShadeBatch> range_batches(ranges, whole);
@@ -101,7 +111,7 @@ void shade_in_bins(DrawCall& call, Framebuffer& target, const ScreenMesh& screen
 
 void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
                     const DrawOptions& options) {
-  const BinGrid grid(call.clip);
+  const BinGrid grid(call.clip, call.workers.threads);
   const std::size_t triangles = call.report.triangles;
   const std::size_t ranges = binning_ranges(triangles, call.workers.threads);
   BinLists lists(ranges, grid.count());
@@ -123,8 +133,8 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
                               call.clip,
                               options.cull,
                               nullptr};
-    bin_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),
-                  range_reports[range]);
+    bin_screen_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),
+                         range_reports[range]);
   });
   DrawReport& report = call.report;
   for (const DrawReport& part : vertex_reports) {

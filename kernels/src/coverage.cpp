@@ -49,7 +49,7 @@ const detail::KernelTable& chosen_kernels(const RasterOptions& options) {
 // Pixels are counted per tile and every tile lies in one bin, so the sum is the one-thread sum.
 CoverageCount count_in_bins(const detail::TriangleBatch& batch, const detail::KernelTable& kernels,
                             const detail::Workers& workers) {
-  const detail::BinGrid grid(batch.clip);
+  const detail::BinGrid grid(batch.clip, workers.threads);
   const std::size_t ranges = detail::binning_ranges(batch.triangle_count, workers.threads);
   detail::BinLists lists(ranges, grid.count());
   std::vector<RasterReport> range_reports(ranges);
@@ -65,10 +65,10 @@ CoverageCount count_in_bins(const detail::TriangleBatch& batch, const detail::Ke
     part.statuses = nullptr;
     RasterReport ignored;  // the binning counted the triangles
     for (std::size_t range = 0; range < ranges; ++range) {
-      const std::vector<std::uint32_t>& list = lists.list(range, bin);
+      const detail::CornerList& list = lists.list(range, bin);
       if (list.empty()) continue;
       part.indices = list.data();
-      part.triangle_count = list.size() / 3;
+      part.triangle_count = list.triangles();
       kernels.count_coverage(part, ignored, bin_pixels[bin]);
     }
   });
@@ -141,7 +141,7 @@ CoverageCount count_coverage(std::span<const Vec2> vertices, std::span<const std
   const detail::Workers workers =
       detail::resolve_workers(options.threads, options.executor, "count_coverage");
   // Bin lists hold 32-bit corner indices.
-  if (workers.threads > 1 && detail::BinGrid(batch.clip).count() > 1 &&
+  if (workers.threads > 1 && detail::BinGrid(batch.clip, workers.threads).count() > 1 &&
       vertices.size() <= UINT32_MAX && 3 * batch.triangle_count <= UINT32_MAX) {
     return count_in_bins(batch, kernels, workers);
   }

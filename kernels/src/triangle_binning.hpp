@@ -13,23 +13,26 @@
 
 namespace edgewise::detail {
 
-// Bins are kBinWidth x kBinHeight pixels, aligned to multiples of their size, so every 8x8 tile
-// (and its depth bound) lies in exactly one bin. Measured on AMD Zen 5 with the Shading
-// benchmarks: see docs/DESIGN.md, "Threads".
-inline constexpr std::int32_t kBinWidth = 128;
-inline constexpr std::int32_t kBinHeight = 64;
-static_assert(kBinWidth % kTileSize == 0 && kBinHeight % kTileSize == 0);
-
-// The bins over a clip rectangle: bin (column, row) is the clip rectangle within
-// [(first_column + column) * kBinWidth, ... + kBinWidth) x (likewise in y).
+// The bins over a clip rectangle. Bins are 2^width_shift x 2^height_shift pixels, at least 8x8
+// and aligned to multiples of their size, so every 8x8 tile (and its depth bound) lies in
+// exactly one bin; bin (column, row) is the clip rectangle within
+// [(first_column + column) << width_shift, ...) x [(first_row + row) << height_shift, ...).
 struct BinGrid {
   PixelRect clip;
+  int width_shift = 0, height_shift = 0;
   std::int32_t first_column = 0, first_row = 0, columns = 0, rows = 0;
 
-  explicit BinGrid(const PixelRect& clip_rect);
+  // The largest bins of kBinSizes that still give every thread kBinsPerThread of them (the
+  // smallest when none does); measured in docs/DESIGN.md, "Threads".
+  BinGrid(const PixelRect& clip_rect, std::size_t threads);
+  BinGrid(const PixelRect& clip_rect, int width_shift, int height_shift);
   std::size_t count() const { return static_cast<std::size_t>(columns) * rows; }
   PixelRect rect(std::size_t bin) const;
 };
+
+// Bin sizes as (log2 width, log2 height), largest first.
+inline constexpr int kBinSizes[][2] = {{8, 7}, {7, 7}, {7, 6}, {6, 6}};
+inline constexpr std::size_t kBinsPerThread = 8;
 
 // The status the kernels' setup gives a triangle with these (unsnapped) vertices, computed the
 // same way in double (kernels/generic/triangle_setup-inl.hpp, setup_triangles), and for a drawn
@@ -38,12 +41,36 @@ struct BinGrid {
 TriangleStatus classify_triangle(const Vec2 vertices[3], CullMode cull, const PixelRect& clip,
                                  PixelRect& box);
 
-// One list of corner indices (three per triangle, as TriangleBatch::indices) per range and bin.
+// The corner indices of one bin's triangles from one range, three per triangle, as
+// TriangleBatch::indices takes them. Appending is one capacity check per triangle (binning runs
+// once per triangle; see docs/DESIGN.md, "Threads"); the storage is kept when emptied.
+class CornerList {
+ public:
+  void append(const std::uint32_t corner[3]) {
+    if (capacity_ - size_ < 3) grow();
+    std::uint32_t* end = data_.get() + size_;
+    end[0] = corner[0];
+    end[1] = corner[1];
+    end[2] = corner[2];
+    size_ += 3;
+  }
+  void clear() { size_ = 0; }
+  bool empty() const { return size_ == 0; }
+  std::size_t triangles() const { return size_ / 3; }
+  const std::uint32_t* data() const { return data_.get(); }
+
+ private:
+  void grow();
+  std::unique_ptr<std::uint32_t[]> data_;
+  std::size_t size_ = 0, capacity_ = 0;
+};
+
+// One CornerList per range and bin.
 // The lists' storage is kept from call to call: a call borrows a set from a process-wide pool
 // (a lock taken once per call) and gives it back when done.
 class BinLists {
  public:
-  using Lists = std::vector<std::vector<std::uint32_t>>;
+  using Lists = std::vector<CornerList>;
   // ranges x bins empty lists.
   BinLists(std::size_t ranges, std::size_t bins);
   ~BinLists();
@@ -51,10 +78,8 @@ class BinLists {
   BinLists& operator=(const BinLists&) = delete;
 
   // The grid.count() lists of one range, for bin_triangles().
-  std::vector<std::uint32_t>* range_lists(std::size_t range) {
-    return lists_->data() + range * bins_;
-  }
-  const std::vector<std::uint32_t>& list(std::size_t range, std::size_t bin) const {
+  CornerList* range_lists(std::size_t range) { return lists_->data() + range * bins_; }
+  const CornerList& list(std::size_t range, std::size_t bin) const {
     return (*lists_)[range * bins_ + bin];
   }
 
@@ -69,7 +94,16 @@ class BinLists {
 // clipped box is not empty are appended to `lists` (grid.count() of them) of every bin their box
 // overlaps, as their three corner indices into batch.vertices.
 void bin_triangles(const TriangleBatch& batch, std::size_t first, std::size_t last,
-                   const BinGrid& grid, std::vector<std::uint32_t>* lists, RasterReport& report);
+                   const BinGrid& grid, CornerList* lists, RasterReport& report);
+
+// bin_triangles() for draw(), whose report needs no statuses and counts only culled triangles
+// and errors, and whose triangles mostly fall in one bin: a triangle that can only reach one bin
+// goes there undecided, and the kernel call of that bin decides and counts its status (the
+// caller adds the culled triangles and errors of those calls); any other is decided here as
+// bin_triangles() does, and only drawn ones are binned, so every triangle is counted once.
+// `report` counts all triangles, and those decided here.
+void bin_screen_triangles(const TriangleBatch& batch, std::size_t first, std::size_t last,
+                          const BinGrid& grid, CornerList* lists, RasterReport& report);
 
 // Adds `part`, the report of a later range of triangles, to `total`.
 void add_range_report(RasterReport& total, const RasterReport& part);
