@@ -27,14 +27,14 @@ struct Triangles {
   std::vector<std::uint32_t> indices;
 };
 
-// Random triangles of sizes from below a pixel to past the target, a few of them bad.
-Triangles random_triangles(std::uint64_t seed, int count) {
+// Random triangles of sizes from below a pixel to `max_size`, a few of them bad.
+Triangles random_triangles(std::uint64_t seed, int count, double max_size) {
   Random random(seed);
   Triangles out;
   for (int t = 0; t < count; ++t) {
     const double cx = random.uniform(-100.0, kWidth + 100.0);
     const double cy = random.uniform(-100.0, kHeight + 100.0);
-    const double size = random.log_uniform(0.3, 900.0);
+    const double size = random.log_uniform(0.3, max_size);
     for (int i = 0; i < 3; ++i) {
       out.vertices.push_back({static_cast<float>(cx + random.uniform(-size, size)),
                               static_cast<float>(cy + random.uniform(-size, size))});
@@ -46,7 +46,7 @@ Triangles random_triangles(std::uint64_t seed, int count) {
   }
   const std::uint32_t n = static_cast<std::uint32_t>(out.vertices.size());
   for (std::uint32_t c = 0; c < n; ++c)
-    out.indices.push_back(random.chance(0.005) ? n + 7 : (c * 7919u) % n);  // a few bad
+    out.indices.push_back(random.chance(0.005) ? n + 7 : n - 1 - c);  // reversed, a few bad
   return out;
 }
 
@@ -89,8 +89,16 @@ void expect_same(const Counted& one, const Counted& many, const std::string& wha
 
 using CoverageThreads = IsaTest;
 
+// Enough triangles for several binning ranges (over 2048 each, kernels/src/triangle_binning.hpp);
+// smaller ones for the reference, which evaluates every pixel of a triangle's box (the tsan
+// stage of tools/check runs these tests about 20 times slower).
+Triangles triangles_for(Isa isa, std::uint64_t seed) {
+  return isa == Isa::reference ? random_triangles(seed, 6000, 150.0)
+                               : random_triangles(seed, 12000, 400.0);
+}
+
 TEST_P(CoverageThreads, CountCoverageIsTheSameForEveryThreadCount) {
-  const Triangles triangles = random_triangles(21, isa() == Isa::reference ? 3000 : 12000);
+  const Triangles triangles = triangles_for(isa(), 21);
   for (bool indexed : {false, true}) {
     for (CullMode cull : {CullMode::none, CullMode::counter_clockwise}) {
       const Counted one = count(isa(), triangles, indexed, cull, 1);
@@ -108,7 +116,7 @@ TEST_P(CoverageThreads, CountCoverageIsTheSameForEveryThreadCount) {
 }
 
 TEST_P(CoverageThreads, CallersExecutorCountsTheSame) {
-  const Triangles triangles = random_triangles(22, 5000);
+  const Triangles triangles = triangles_for(isa(), 22);
   std::size_t runs = 0;
   const TaskExecutor reversed = [&](std::size_t n, const std::function<void(std::size_t)>& task) {
     ++runs;
@@ -136,7 +144,7 @@ class RecordingSink : public CoverageSink {
 };
 
 TEST_P(CoverageThreads, RasterizeDeliversOnTheCallingThreadInOrder) {
-  const Triangles triangles = random_triangles(23, 2000);
+  const Triangles triangles = random_triangles(23, 2000, 100.0);
   const RasterTarget target{kWidth, kHeight, {}};
   RasterOptions options;
   options.isa = isa();
