@@ -43,11 +43,11 @@ void count_screen_triangles(DrawReport& report, std::span<const RasterReport> ra
   report.errors += raster.errors;
 }
 
-// What one bin's kernel calls counted.
+// What one bin's kernel calls counted. Of the triangle counts, only the culled triangles and
+// errors are new: those of the triangles bin_screen_triangles() left to the bins.
 struct BinCounts {
   ShadeCounts shading;
-  RasterReport
-      triangles;  // of these, only the culled ones and errors are new (bin_screen_triangles)
+  RasterReport triangles;
 };
 
 // Shades every bin, one task each: the lists of every range in range order, each through the
