@@ -43,6 +43,7 @@ DrawOptions ground_plane_options(Isa isa, TextureFilter filter, TextureDerivativ
   options.transform = ground_plane_mesh().transform;
   options.shading = Shading::flat;
   options.isa = isa;
+  options.threads = 1;  // one core, as the results compare
   options.texture = DrawTexture{&checkerboard_texture(), {}, derivatives};
   options.texture->sampler.filter = filter;
   return options;

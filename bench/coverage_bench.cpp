@@ -1,5 +1,5 @@
 // Coverage-only rasterization throughput: random triangles of one area per benchmark, a batch
-// per count_coverage() call, for every supported ISA and the reference.
+// per count_coverage() call on one thread, for every supported ISA and the reference.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -43,6 +43,7 @@ void coverage(benchmark::State& state, Isa isa, AreaCase c) {
   const RasterTarget target{kWidth, kHeight, {}};
   RasterOptions options;
   options.isa = isa;
+  options.threads = 1;  // one core, as the peer and target figures
 
   CoverageCount last;
   for (auto _ : state) {

@@ -6,6 +6,10 @@
 // - ShadingMethod/<isa>/<method>/<perspective>/area:<px>: the same triangles on screen (64 and
 //   1000 px) seen through a perspective camera, so that w varies across each triangle, drawn with
 //   every interpolation method, perspective-correct and affine.
+// - Shading/<isa>/threads:all/area:<px>: the Shading/ workload on every core (threads = 0, the
+//   default: oneTBB's concurrency or EDGEWISE_THREADS), one draw() call as draw() runs it, timed
+//   in wall-clock time (the one-thread benchmarks are timed in the thread's CPU time, which on
+//   an idle machine is the same).
 // One iteration is one draw() call over the whole set, from the vertex arrays to the written
 // pixels; the framebuffer is cleared before each call with the timer paused.
 #include <benchmark/benchmark.h>
@@ -134,6 +138,39 @@ void shading(benchmark::State& state, Isa isa, ShadingCase c) {
   draw_scene(state, isa, Camera::orthographic, c, shading_options(isa, Camera::orthographic));
 }
 
+// The same workload on every core, through draw() itself: with several threads, draw() runs
+// the vertex stage of a mesh without indices on ranges of triangles at once, so it cannot be
+// timed apart.
+void shading_all_threads(benchmark::State& state, Isa isa, ShadingCase c) {
+  DrawOptions options = shading_options(isa, Camera::orthographic);
+  options.threads = 0;
+  const ShadingScene& s = shading_scene(Camera::orthographic, c);
+  const std::size_t triangles = triangles_for(isa, c);
+  DrawMesh mesh;
+  mesh.positions = std::span(s.positions).first(3 * triangles);
+  mesh.colors = std::span(s.colors).first(3 * triangles);
+  Framebuffer target(kWidth, kHeight);
+  DrawReport last;
+  for (auto _ : state) {
+    state.PauseTiming();
+    target.clear(kShadingClearColor, kShadingClearDepth);
+    state.ResumeTiming();
+    last = draw(target, mesh, options);
+    benchmark::DoNotOptimize(target.color_tiles());
+    benchmark::ClobberMemory();
+  }
+  const std::string problem = check(last, isa, triangles, c.area, target);
+  if (!problem.empty()) state.SkipWithError(problem.c_str());
+  const double iterations = double(state.iterations());
+  const auto rate = [&](double per_call) {
+    return benchmark::Counter(per_call * iterations, benchmark::Counter::kIsRate);
+  };
+  state.counters["triangles"] = rate(double(triangles));
+  state.counters["fragments"] = rate(double(last.fragments));
+  state.counters["written"] = rate(double(last.fragments_passed));
+  state.counters["threads"] = double(default_thread_count());
+}
+
 // The same workload without hierarchical depth: what skipping hidden tiles is worth.
 void shading_without_tile_depth(benchmark::State& state, Isa isa, ShadingCase c) {
   DrawOptions options = shading_options(isa, Camera::orthographic);
@@ -170,6 +207,14 @@ void register_draw_benchmarks() {
     for (const ShadingCase& c : kShadingCases) {
       const std::string name = joined({"Shading", name_of(isa), area_label(c)});
       benchmark::RegisterBenchmark(name.c_str(), shading, isa, c)->Unit(benchmark::kMicrosecond);
+    }
+  }
+  for (Isa isa : supported_isas()) {
+    for (const ShadingCase& c : kShadingCases) {
+      const std::string name = joined({"Shading", name_of(isa), "threads:all", area_label(c)});
+      benchmark::RegisterBenchmark(name.c_str(), shading_all_threads, isa, c)
+          ->Unit(benchmark::kMicrosecond)
+          ->UseRealTime();
     }
   }
   for (Isa isa : supported_isas()) {

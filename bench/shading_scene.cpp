@@ -67,6 +67,7 @@ DrawOptions shading_options(Isa isa, Camera camera) {
   options.depth_write = true;
   options.shading = Shading::gouraud;
   options.isa = isa;
+  options.threads = 1;  // one core; Shading/<isa>/threads:all/ sets its own
   return options;
 }
 

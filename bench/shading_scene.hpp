@@ -32,7 +32,8 @@ const ShadingScene& shading_scene(Camera camera, const ShadingCase& c);
 // View space to clip space for `camera`.
 Mat4 camera_transform(Camera camera);
 
-// The workload's draw() settings: `camera`'s transform, depth test less with writes, Gouraud.
+// The workload's draw() settings: `camera`'s transform, depth test less with writes, Gouraud,
+// one thread.
 DrawOptions shading_options(Isa isa, Camera camera);
 
 // Clear colour with alpha 0: every written pixel has alpha 255 (vertex alphas are 1), so the

@@ -5,7 +5,8 @@ the scalar reference, and the comparison with published peer figures and with th
 - Coverage/*: triangles/s and pixels/s, against Intel Masked Occlusion Culling and the coverage
   targets;
 - Shading/*: triangles/s, covered fragments/s and written pixels/s of draw(), against the
-  shading targets (AVX2, one core);
+  shading targets (AVX2, one core); Shading/<isa>/threads:all/*: the same on every core, and the
+  ratio all threads / one thread per size;
 - ShadingMethod/*: fragments/s per interpolation method and perspective mode, relative to the
   production method (plane equations, perspective-correct);
 - Sample/*, SamplePeer/*: texture samples/s per filter, ISA and query stream, beside
@@ -51,6 +52,8 @@ SAMPLE_PEER = {"nearest": "closest", "bilinear": "bilinear", "bicubic_bspline": 
 
 COVERAGE_NAME = re.compile(r"^Coverage/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 SHADING_NAME = re.compile(r"^Shading/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
+ALL_THREADS_NAME = re.compile(r"^Shading/(?P<isa>[a-z0-9_]+)/threads:all/area:(?P<area>\d+)"
+                              r"(/real_time)?$")
 PLAIN_DEPTH_NAME = re.compile(r"^ShadingWithoutTileDepth/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 METHOD_NAME = re.compile(r"^ShadingMethod/(?P<isa>[a-z0-9_]+)/(?P<method>[a-z_]+)/"
                          r"(?P<perspective>[a-z]+)/area:(?P<area>\d+)(/min_time:[0-9.]+)?$")
@@ -88,7 +91,7 @@ def medians(benchmarks):
             if entry.get("aggregate_name") == "median":
                 slot["median"] = entry
             elif entry.get("aggregate_name") == "cv":
-                manual = name.endswith("/manual_time")  # reported as its real time
+                manual = name.endswith(("/manual_time", "/real_time"))  # timed in real time
                 slot["cv"] = entry.get("real_time" if manual else "cpu_time")
         else:
             slot["runs"].append(entry)
@@ -246,6 +249,27 @@ def print_shading(shading, plain_depth):
         verdict = "met" if entry[counter] >= rate else "NOT met"
         print(f"AVX2 at {area} px: {si(entry[counter], '')} {counter}/s "
               f"(target >= {target_text(area)}: {verdict}, {entry[counter] / rate:.2f}x)")
+
+
+def print_threads(all_threads, shading):
+    print("Shaded drawing on every core (Shading/<isa>/threads:all, wall-clock time) against one "
+          "thread (Shading/<isa>, CPU time)")
+    header = ["area px", "ISA", "threads", "triangles/s", "fragments/s", "cv",
+              "one thread", "all / one"]
+    rows = []
+    for area, isa in sorted(all_threads, key=lambda k: (k[0], isa_key(k[1]))):
+        entry = all_threads[(area, isa)]
+        if "error" in entry:
+            rows.append([str(area), isa, "ERROR: " + entry["error"]] + [""] * 5)
+            continue
+        one = shading.get((area, isa), {})
+        rows.append([
+            str(area), isa, f"{entry.get('threads', 0):.0f}", si(entry["triangles"], "/s"),
+            si(entry["fragments"], "/s"), cv_cell(entry),
+            si(one["triangles"], "/s") if "triangles" in one else "-",
+            ratio(entry["triangles"], one["triangles"]) if "triangles" in one else "-",
+        ])
+    print_table(header, rows)
 
 
 def print_methods(methods):
@@ -433,6 +457,7 @@ def main(argv):
     coverage = collect(results, COVERAGE_NAME, lambda m: (int(m["area"]), m["isa"]))
     shading = collect(results, SHADING_NAME, lambda m: (int(m["area"]), m["isa"]))
     plain_depth = collect(results, PLAIN_DEPTH_NAME, lambda m: (int(m["area"]), m["isa"]))
+    all_threads = collect(results, ALL_THREADS_NAME, lambda m: (int(m["area"]), m["isa"]))
     methods = collect(results, METHOD_NAME,
                       lambda m: (int(m["area"]), m["method"], m["perspective"], m["isa"]))
     samples = collect(results, SAMPLE_NAME, lambda m: (m["filter"], m["stream"], m["isa"]))
@@ -448,6 +473,7 @@ def main(argv):
 
     for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
                                        (print_shading, shading, (shading, plain_depth)),
+                                       (print_threads, all_threads, (all_threads, shading)),
                                        (print_methods, methods, (methods,)),
                                        (print_sampling, samples, (samples, peers)),
                                        (print_textured_draw, draws, (draws, samples)),

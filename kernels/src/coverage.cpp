@@ -1,11 +1,16 @@
-// Public raster entry points: argument checks, then the chosen ISA's kernels.
+// Public raster entry points: argument checks, then the chosen ISA's kernels; count_coverage()
+// in screen bins on several threads when asked (docs/DESIGN.md, "Threads").
 #include "edgewise/coverage.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "kernel_table.hpp"
+#include "parallel.hpp"
+#include "triangle_binning.hpp"
 
 namespace edgewise {
 namespace {
@@ -37,6 +42,43 @@ detail::TriangleBatch make_batch(std::span<const Vec2> vertices,
 
 const detail::KernelTable& chosen_kernels(const RasterOptions& options) {
   return detail::kernel_table(resolve_isa(options.isa));
+}
+
+// count_coverage() in bins: ranges of triangles binned at once (statuses and counts decided
+// there, once per triangle), then each bin counted by one task, its ranges' lists in order.
+// Pixels are counted per tile and every tile lies in one bin, so the sum is the one-thread sum.
+CoverageCount count_in_bins(const detail::TriangleBatch& batch, const detail::KernelTable& kernels,
+                            const detail::Workers& workers) {
+  const detail::BinGrid grid(batch.clip, workers.threads);
+  const std::size_t ranges = detail::binning_ranges(batch.triangle_count, workers.threads);
+  detail::BinLists lists(ranges, grid.count());
+  std::vector<RasterReport> range_reports(ranges);
+  workers.run(ranges, [&](std::size_t range) {
+    detail::bin_triangles(batch, range * batch.triangle_count / ranges,
+                          (range + 1) * batch.triangle_count / ranges, grid,
+                          lists.range_lists(range), range_reports[range]);
+  });
+  std::vector<std::uint64_t> bin_pixels(grid.count());
+  workers.run(grid.count(), [&](std::size_t bin) {
+    detail::TriangleBatch part = batch;
+    part.clip = grid.rect(bin);
+    part.statuses = nullptr;
+    RasterReport ignored;  // the binning counted the triangles
+    for (std::size_t range = 0; range < ranges; ++range) {
+      const detail::CornerList& list = lists.list(range, bin);
+      if (list.empty()) continue;
+      part.indices = list.data();
+      part.triangle_count = list.triangles();
+      kernels.count_coverage(part, ignored, bin_pixels[bin]);
+    }
+  });
+  CoverageCount count;
+  count.report.isa = kernels.isa;
+  for (const RasterReport& range : range_reports)
+    detail::add_range_report(count.report, range);
+  for (std::uint64_t pixels : bin_pixels)
+    count.pixels += pixels;
+  return count;
 }
 
 }  // namespace
@@ -96,6 +138,13 @@ CoverageCount count_coverage(std::span<const Vec2> vertices, std::span<const std
                              const RasterTarget& target, const RasterOptions& options) {
   const detail::TriangleBatch batch = make_batch(vertices, indices, target, options);
   const detail::KernelTable& kernels = chosen_kernels(options);
+  const detail::Workers workers =
+      detail::resolve_workers(options.threads, options.executor, "count_coverage");
+  // Bin lists hold 32-bit corner indices.
+  if (workers.threads > 1 && detail::BinGrid(batch.clip, workers.threads).count() > 1 &&
+      vertices.size() <= UINT32_MAX && 3 * batch.triangle_count <= UINT32_MAX) {
+    return count_in_bins(batch, kernels, workers);
+  }
   CoverageCount count;
   count.report.isa = kernels.isa;
   kernels.count_coverage(batch, count.report, count.pixels);

@@ -1,10 +1,12 @@
 // draw(): its arguments checked and its ISA chosen, then its two stages (draw_stages.hpp): the
-// vertex stage (vertex_stage.cpp) and the chosen ISA's shading kernel.
+// vertex stage (vertex_stage.cpp) and the chosen ISA's shading kernel, on the calling thread or
+// in bins on several (binned_draw.cpp).
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "binned_draw.hpp"
 #include "draw_stages.hpp"
 #include "framebuffer_access.hpp"
 #include "shade_batch.hpp"
@@ -61,18 +63,15 @@ DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const Dra
   call.report.isa = resolve_isa(options.isa);
   call.kernels = &kernel_table(call.report.isa);
   call.clip = clip_rect(RasterTarget{target.width(), target.height(), options.scissor});
+  call.workers = resolve_workers(options.threads, options.executor, "draw");
   const std::size_t corners = mesh.indices.empty() ? mesh.positions.size() : mesh.indices.size();
   call.report.triangles = corners / 3;
   return call;
 }
 
-void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& screen,
-                       const DrawOptions& options) {
-  DrawReport& report = call.report;
-  const PixelRect clip = call.clip;
-  // The texture flattened for the kernels once per draw.
-  std::optional<FlatTexture> flat_texture;
-  if (options.texture) flat_texture.emplace(*options.texture->texture);
+ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
+                            const DrawOptions& options, const PixelRect& clip,
+                            const TextureDescription* texture) {
   ShadeBatch batch{{screen.positions.data(), screen.positions.size(), screen.indices.data(),
                     screen.indices.size() / 3, clip, options.cull, nullptr},
                    screen.depth.data(),
@@ -94,13 +93,29 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
   if (options.texture) {
     batch.uvs = screen.uvs.data();
     batch.texture = options.texture->texture;
-    batch.texture_description = flat_texture ? &flat_texture->description() : nullptr;
+    batch.texture_description = texture;
     batch.sampler = options.texture->sampler;
     batch.derivatives = options.texture->derivatives;
   }
+  return batch;
+}
+
+void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& screen,
+                       const DrawOptions& options) {
+  if (screen.indices.empty()) return;
+  // The texture flattened for the kernels once per draw.
+  std::optional<FlatTexture> flat_texture;
+  if (options.texture) flat_texture.emplace(*options.texture->texture);
+  const TextureDescription* texture = flat_texture ? &flat_texture->description() : nullptr;
+  if (call.binned()) {
+    shade_in_bins(call, target, screen, options, texture);
+    return;
+  }
+  const ShadeBatch batch = make_shade_batch(target, screen, options, call.clip, texture);
   RasterReport raster;
   ShadeCounts counts;
-  if (!screen.indices.empty()) call.kernels->shade(batch, raster, counts);
+  call.kernels->shade(batch, raster, counts);
+  DrawReport& report = call.report;
   report.rasterized = raster.triangles;
   report.culled += raster.culled;
   report.errors += raster.errors;
@@ -114,6 +129,10 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
 DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options) {
   detail::DrawCall call = detail::prepare_draw(target, mesh, options);
   if (!call.has_work()) return call.report;
+  if (call.binned() && mesh.indices.empty()) {
+    detail::draw_in_ranges(call, target, mesh, options);
+    return call.report;
+  }
   const detail::ScreenMesh screen = detail::map_to_screen(call, target, mesh, options);
   detail::shade_screen_mesh(call, target, screen, options);
   return call.report;

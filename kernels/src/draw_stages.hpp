@@ -1,20 +1,26 @@
 // draw()'s stages, each a function of its own, for the project's tools and benchmarks that time
 // them apart: draw() is exactly prepare_draw(), then (for a call with work) map_to_screen() and
-// shade_screen_mesh().
+// shade_screen_mesh(), or, for a mesh without indices on several threads, draw_in_ranges(),
+// which runs the vertex stage on ranges of triangles at once (docs/DESIGN.md, "Threads").
 #pragma once
 
 #include "edgewise/draw.hpp"
 #include "kernel_table.hpp"
+#include "parallel.hpp"
 #include "screen_mesh.hpp"
 
 namespace edgewise::detail {
 
-// A checked call: its ISA's kernels, the clip rectangle, and the report so far.
+// A checked call: its ISA's kernels, the clip rectangle, its threads, and the report so far.
 struct DrawCall {
   const KernelTable* kernels = nullptr;
   PixelRect clip;
   DrawReport report;  // isa and triangles filled in
+  Workers workers;
   bool has_work() const { return !clip.empty() && report.triangles != 0; }
+  // Whether the call draws in bins on several threads (else on the calling thread alone, as
+  // one kernel call: the direct path, with no binning).
+  bool binned() const;
 };
 
 // Checks the arguments (draw.hpp says what throws) and chooses the ISA.
@@ -25,8 +31,15 @@ DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const Dra
 ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
                          const DrawOptions& options);
 
-// The screen mesh through the ISA's shading kernel: setup, coverage, depth test and shading.
+// The screen mesh through the ISA's shading kernel: setup, coverage, depth test and shading;
+// in bins on the call's threads when it is binned().
 void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& screen,
                        const DrawOptions& options);
+
+// The vertex stage and shade_screen_mesh() of a binned() call whose mesh has no indices, with
+// the vertex stage itself run on ranges of triangles at once: each range is mapped to a screen
+// mesh of its own and binned by one task; then each bin is shaded by one task.
+void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
+                    const DrawOptions& options);
 
 }  // namespace edgewise::detail

@@ -19,7 +19,8 @@ EDGEWISE_DEMO_PACKAGES=(
   g++                  # GCC 12, the C++20 compiler, with binutils (linker, objdump, nm)
   cmake                # the build system (3.22 or newer)
   ninja-build          # the generator the scripts configure with
-  libxsimd-dev         # the library's only dependency: the SIMD batches its kernels are written in
+  libxsimd-dev         # the SIMD batches the library's kernels are written in
+  libtbb-dev           # oneTBB: the library runs draw()'s and count_coverage()'s threads on it
   libopenimageio-dev   # image files: the tools write PNG images and read textures
   openimageio-tools    # OpenImageIO's CMake package imports its tools (/usr/bin/iconvert...): no configure without
   libtinyobjloader-dev # edgewise-render reads OBJ meshes (testing/scene)
@@ -55,19 +56,29 @@ EDGEWISE_CHECK_SANITIZE_PACKAGES=(
   g++                  # GCC 12 with its AddressSanitizer and UBSan runtimes
   cmake                # the build system
   ninja-build          # the generator
-  libxsimd-dev         # the library's only dependency
+  libxsimd-dev         # the kernels' SIMD batches
+  libtbb-dev           # oneTBB, the library's threads
   libopenimageio-dev   # the tools, whose tests run sanitized too
   openimageio-tools    # OpenImageIO's CMake package needs them; oiiotool writes test textures
   libtinyobjloader-dev # edgewise-render and the mesh tests
   libcli11-dev         # CLI11: the tools' command lines
   libgtest-dev         # GoogleTest: the test suite
 )
+# The multi-thread tests, built with ThreadSanitizer; tasks on std::thread, not oneTBB (tools/check).
+EDGEWISE_CHECK_TSAN_PACKAGES=(
+  g++          # GCC 12 with its ThreadSanitizer runtime
+  cmake        # the build system
+  ninja-build  # the generator
+  libxsimd-dev # the kernels' SIMD batches
+  libgtest-dev # GoogleTest: the tests
+)
 EDGEWISE_CHECK_FUZZ_PACKAGES=(
   clang-14           # the fuzz targets' compiler (libFuzzer needs clang)
   libclang-rt-14-dev # libFuzzer and clang's sanitizer runtimes
   cmake              # the build system
   ninja-build        # the generator
-  libxsimd-dev       # the library's only dependency
+  libxsimd-dev       # the kernels' SIMD batches
+  libtbb-dev         # oneTBB, the library's threads
 )
 # The host build, installed, then a consumer project built against it with the same tools.
 EDGEWISE_CHECK_INSTALL_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")

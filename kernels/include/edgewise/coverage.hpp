@@ -5,16 +5,20 @@
 // mask has bit (y * 8 + x) for pixel (tile_x * 8 + x, tile_y * 8 + y).
 //
 // Thread safety: rasterize() and count_coverage() keep no state between calls and may run on
-// many threads at once, each with its own sink and statuses; the sink is called on the calling
-// thread, before the function returns.
+// many threads at once, each with its own sink and statuses. rasterize() always runs on the
+// calling thread alone, whatever RasterOptions::threads says, so that its sink sees tiles in the
+// order stated below, on that thread, before the function returns. count_coverage() uses
+// RasterOptions::threads (threads.hpp): its counts and statuses are the same for every count.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
 
 #include "edgewise/isa.hpp"
+#include "edgewise/threads.hpp"
 #include "edgewise/vector.hpp"
 #include "edgewise/names.hpp"
 
@@ -59,6 +63,10 @@ struct RasterOptions {
   std::optional<Isa> isa;  // default: active_isa()
   // Optional: one status per triangle is written here (size must equal the triangle count).
   std::span<TriangleStatus> statuses;
+  // count_coverage() only (rasterize() ignores them): 0 takes default_thread_count(), 1 counts
+  // on the calling thread alone; the executor runs the tasks (empty: oneTBB's; threads.hpp).
+  std::size_t threads = 0;
+  TaskExecutor executor;
 };
 
 struct RasterReport {

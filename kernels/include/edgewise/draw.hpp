@@ -19,9 +19,13 @@
 // planes do not depend on the interpolation method, which applies to colours and normals.
 //
 // Thread safety: draw() keeps no state between calls. Calls on different framebuffers may run at
-// once, sharing meshes and textures (only read); two calls on the same framebuffer may not.
+// once, sharing meshes and textures (only read); two calls on the same framebuffer may not. With
+// DrawOptions::threads other than 1, one call itself runs on several threads (threads.hpp): it
+// sorts the triangles into screen bins, each drawn by one thread in submission order, and
+// returns when all are done.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -34,6 +38,7 @@
 #include "edgewise/coverage.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
+#include "edgewise/threads.hpp"
 #include "edgewise/vector.hpp"
 #include "edgewise/names.hpp"
 
@@ -94,6 +99,11 @@ struct DrawOptions {
   bool hierarchical_depth = true;
   std::optional<PixelRect> scissor;  // intersected with the framebuffer
   std::optional<Isa> isa;            // default: active_isa()
+  // Threads (threads.hpp): 0 takes default_thread_count(), 1 draws on the calling thread alone.
+  // The framebuffer and the report are the same bit for bit for every count.
+  std::size_t threads = 0;
+  // Runs the call's tasks on those threads; empty: oneTBB's (threads.hpp states the contract).
+  TaskExecutor executor;
 };
 
 struct DrawReport {

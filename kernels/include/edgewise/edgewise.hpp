@@ -9,4 +9,5 @@
 #include "edgewise/draw.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
+#include "edgewise/threads.hpp"
 #include "edgewise/vector.hpp"

@@ -1,0 +1,117 @@
+// Sort-middle binning (docs/DESIGN.md, "Threads"): the clip rectangle cut into screen bins, each
+// triangle's status decided once, and its corner indices appended to the lists of the bins its
+// box overlaps, one set of lists per range of triangles.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "edgewise/coverage.hpp"
+#include "kernel_table.hpp"
+
+namespace edgewise::detail {
+
+// The bins over a clip rectangle. Bins are 2^width_shift x 2^height_shift pixels, at least 8x8
+// and aligned to multiples of their size, so every 8x8 tile (and its depth bound) lies in
+// exactly one bin; bin (column, row) is the clip rectangle within
+// [(first_column + column) << width_shift, ...) x [(first_row + row) << height_shift, ...).
+struct BinGrid {
+  PixelRect clip;
+  int width_shift = 0, height_shift = 0;
+  std::int32_t first_column = 0, first_row = 0, columns = 0, rows = 0;
+
+  // The largest bins of kBinSizes that still give every thread kBinsPerThread of them (the
+  // smallest when none does); measured in docs/DESIGN.md, "Threads".
+  BinGrid(const PixelRect& clip_rect, std::size_t threads);
+  BinGrid(const PixelRect& clip_rect, int width_shift, int height_shift);
+  std::size_t count() const { return static_cast<std::size_t>(columns) * rows; }
+  PixelRect rect(std::size_t bin) const;
+};
+
+// Bin sizes as (log2 width, log2 height), largest first.
+inline constexpr int kBinSizes[][2] = {{8, 7}, {7, 7}, {7, 6}, {6, 6}};
+inline constexpr std::size_t kBinsPerThread = 8;
+
+// The status the kernels' setup gives a triangle with these (unsnapped) vertices, computed the
+// same way in double (kernels/generic/triangle_setup-inl.hpp, setup_triangles), and for a drawn
+// triangle its box: the pixels whose samples lie within its snapped bounding box, clipped to
+// `clip` (possibly empty).
+TriangleStatus classify_triangle(const Vec2 vertices[3], CullMode cull, const PixelRect& clip,
+                                 PixelRect& box);
+
+// The corner indices of one bin's triangles from one range, three per triangle, as
+// TriangleBatch::indices takes them. Appending is one capacity check per triangle (binning runs
+// once per triangle; see docs/DESIGN.md, "Threads"); the storage is kept when emptied.
+class CornerList {
+ public:
+  void append(const std::uint32_t corner[3]) {
+    if (capacity_ - size_ < 3) grow();
+    std::uint32_t* end = data_.get() + size_;
+    end[0] = corner[0];
+    end[1] = corner[1];
+    end[2] = corner[2];
+    size_ += 3;
+  }
+  void clear() { size_ = 0; }
+  bool empty() const { return size_ == 0; }
+  std::size_t triangles() const { return size_ / 3; }
+  const std::uint32_t* data() const { return data_.get(); }
+
+ private:
+  void grow();
+  std::unique_ptr<std::uint32_t[]> data_;
+  std::size_t size_ = 0, capacity_ = 0;
+};
+
+// One CornerList per range and bin.
+// The lists' storage is kept from call to call: a call borrows a set from a process-wide pool
+// (a lock taken once per call) and gives it back when done.
+class BinLists {
+ public:
+  using Lists = std::vector<CornerList>;
+  // ranges x bins empty lists.
+  BinLists(std::size_t ranges, std::size_t bins);
+  ~BinLists();
+  BinLists(const BinLists&) = delete;
+  BinLists& operator=(const BinLists&) = delete;
+
+  // The grid.count() lists of one range, for bin_triangles().
+  CornerList* range_lists(std::size_t range) { return lists_->data() + range * bins_; }
+  const CornerList& list(std::size_t range, std::size_t bin) const {
+    return (*lists_)[range * bins_ + bin];
+  }
+
+ private:
+  std::unique_ptr<Lists> lists_;
+  std::size_t bins_;
+};
+
+// Triangles [first, last) of `batch` (its clip rectangle is the grid's): each gets the status
+// run_batch would give it, written to batch.statuses when present and counted into `report`
+// (triangles, drawn, culled, errors, the first error by triangle index); drawn triangles whose
+// clipped box is not empty are appended to `lists` (grid.count() of them) of every bin their box
+// overlaps, as their three corner indices into batch.vertices.
+void bin_triangles(const TriangleBatch& batch, std::size_t first, std::size_t last,
+                   const BinGrid& grid, CornerList* lists, RasterReport& report);
+
+// bin_triangles() for draw(), whose report needs no statuses and counts only culled triangles
+// and errors, and whose triangles mostly fall in one bin: a triangle that can only reach one bin
+// goes there undecided, and the kernel call of that bin decides and counts its status (the
+// caller adds the culled triangles and errors of those calls); any other is decided here as
+// bin_triangles() does, and only drawn ones are binned, so every triangle is counted once.
+// `report` counts all triangles, and those decided here.
+void bin_screen_triangles(const TriangleBatch& batch, std::size_t first, std::size_t last,
+                          const BinGrid& grid, CornerList* lists, RasterReport& report);
+
+// Adds `part`, the report of a later range of triangles, to `total`.
+void add_range_report(RasterReport& total, const RasterReport& part);
+
+// How many ranges to bin `triangles` in with `threads` threads: enough for every thread, but
+// no range shorter than kMinTrianglesPerRange (below it, a range costs more to manage than to
+// bin).
+inline constexpr std::size_t kMinTrianglesPerRange = 2048;
+std::size_t binning_ranges(std::size_t triangles, std::size_t threads);
+
+}  // namespace edgewise::detail
