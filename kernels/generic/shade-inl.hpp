@@ -271,9 +271,14 @@ class ShadingVisitor {
           shade_rows<Test>(mask, rows, depth, color, tile_px, tile_py, columns[column],
                            colour_row_bases, stored_max);
         }
-        // Every path keeps the bound exact, so that which tiles are skipped depends neither on
-        // the walk a triangle takes nor on the bins it is drawn in.
-        if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
+        // Under less and less_equal a write only lowers a stored depth, so the bound stays an
+        // upper bound without a look at the tile's other rows (it may be left looser than the
+        // largest depth: such a tile is skipped less often, never wrongly). Small triangles take
+        // this path whichever bin they are drawn in (triangle_batch-inl.hpp), so the skipped
+        // tiles are the same for every thread count.
+        if constexpr (Test != DepthTest::less && Test != DepthTest::less_equal) {
+          if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
+        }
       }
     }
   }

@@ -77,10 +77,11 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
         visitor.begin_triangle(static_cast<std::uint32_t>(t));
         const TriangleSetup& setup = setups[l];
         const PixelRect& box = setup.box;
-        if (setup.narrow && box.x1 - box.x0 <= kTileSize && box.y1 - box.y0 <= kTileSize) {
+        // The block walks are chosen by the unclipped box (setup.extent), which holds the
+        // clipped one: a triangle takes the same walk whichever bin it is drawn in.
+        if (setup.narrow && setup.extent <= kTileSize) {
           walk_block<Arch>(setup, visitor);
-        } else if (setup.narrow && box.x1 - box.x0 <= 2 * kTileSize &&
-                   box.y1 - box.y0 <= 2 * kTileSize) {
+        } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
           walk_block_16<Arch>(setup, visitor);
         } else if (prefers_span_walk(box) && span_walk_is_exact(setup)) {
           walk_spans<Arch>(setup, visitor);

@@ -47,8 +47,13 @@ struct TriangleSetup {
   EdgeSetup edge[3];
   PixelRect box;                    // samples that can be covered, clipped; never empty when drawn
   std::int32_t origin_x, origin_y;  // first sample of the box's first tile (multiples of 8)
-  bool narrow;                      // the whole tile walk fits in int32
+  // The larger side of the box before clipping, capped at kMaxExtent: the size that chooses a
+  // small triangle's walk, the same whatever rectangle (a thread's bin) the call clips to.
+  std::int32_t extent;
+  bool narrow;  // the whole tile walk fits in int32
 };
+
+inline constexpr std::int32_t kMaxExtent = 1 << 16;
 
 inline constexpr std::int32_t kGuardBandFixed = kGuardBand << kSubpixelBits;
 
@@ -135,6 +140,12 @@ inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip
   const D box_x1 = xsimd::min(xsimd::floor((max_x - D(128.0)) * kInvPixel) + D(1.0), D(clip.x1));
   const D box_y1 = xsimd::min(xsimd::floor((max_y - D(128.0)) * kInvPixel) + D(1.0), D(clip.y1));
   const auto nonempty = box_x0 < box_x1 && box_y0 < box_y1;
+  const D extent = xsimd::min(xsimd::max(xsimd::floor((max_x - D(128.0)) * kInvPixel) -
+                                             xsimd::floor((min_x + D(127.0)) * kInvPixel),
+                                         xsimd::floor((max_y - D(128.0)) * kInvPixel) -
+                                             xsimd::floor((min_y + D(127.0)) * kInvPixel)) +
+                                  D(1.0),
+                              D(kMaxExtent));
   const D origin_x = xsimd::floor(box_x0 * kInvTile) * kTile;
   const D origin_y = xsimd::floor(box_y0 * kInvTile) * kTile;
   // The walk reaches one tile past the last in each direction, plus 7 samples within a tile.
@@ -157,7 +168,8 @@ inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip
     ge.store_aligned(g[e]);
   }
 
-  alignas(64) double box[4][kLanes], origin[2][kLanes], flags[5][kLanes];
+  alignas(64) double box[4][kLanes], origin[2][kLanes], flags[5][kLanes], extents[kLanes];
+  extent.store_aligned(extents);
   box_x0.store_aligned(box[0]);
   box_y0.store_aligned(box[1]);
   box_x1.store_aligned(box[2]);
@@ -197,6 +209,7 @@ inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip
                  static_cast<std::int32_t>(box[2][l]), static_cast<std::int32_t>(box[3][l])};
     setup.origin_x = static_cast<std::int32_t>(origin[0][l]);
     setup.origin_y = static_cast<std::int32_t>(origin[1][l]);
+    setup.extent = static_cast<std::int32_t>(extents[l]);
     setup.narrow = flags[4][l] != 0.0;
   }
 }
