@@ -86,6 +86,21 @@ std::string check(const DrawReport& report, Isa isa, std::size_t triangles, int 
   return {};
 }
 
+// The run's checks and rate counters. Every call redraws the same set into a cleared target:
+// the same counts each iteration.
+void report_draws(benchmark::State& state, const DrawReport& last, Isa isa, std::size_t triangles,
+                  int area, const Framebuffer& target) {
+  const std::string problem = check(last, isa, triangles, area, target);
+  if (!problem.empty()) state.SkipWithError(problem.c_str());
+  const double iterations = double(state.iterations());
+  const auto rate = [&](double per_call) {
+    return benchmark::Counter(per_call * iterations, benchmark::Counter::kIsRate);
+  };
+  state.counters["triangles"] = rate(double(triangles));
+  state.counters["fragments"] = rate(double(last.fragments));
+  state.counters["written"] = rate(double(last.fragments_passed));
+}
+
 void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
                 const DrawOptions& options) {
   const ShadingScene& s = shading_scene(camera, c);
@@ -118,16 +133,7 @@ void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
     last = call.report;
   }
 
-  const std::string problem = check(last, isa, triangles, c.area, target);
-  if (!problem.empty()) state.SkipWithError(problem.c_str());
-  // Every call redraws the same set into a cleared target: the same counts each iteration.
-  const double iterations = double(state.iterations());
-  const auto rate = [&](double per_call) {
-    return benchmark::Counter(per_call * iterations, benchmark::Counter::kIsRate);
-  };
-  state.counters["triangles"] = rate(double(triangles));
-  state.counters["fragments"] = rate(double(last.fragments));
-  state.counters["written"] = rate(double(last.fragments_passed));
+  report_draws(state, last, isa, triangles, c.area, target);
   // Share of draw()'s time spent in the vertex stage (transform, clipping, screen mapping).
   state.counters["vertex_share"] = vertex_seconds + raster_seconds > 0.0
                                        ? vertex_seconds / (vertex_seconds + raster_seconds)
@@ -159,15 +165,7 @@ void shading_all_threads(benchmark::State& state, Isa isa, ShadingCase c) {
     benchmark::DoNotOptimize(target.color_tiles());
     benchmark::ClobberMemory();
   }
-  const std::string problem = check(last, isa, triangles, c.area, target);
-  if (!problem.empty()) state.SkipWithError(problem.c_str());
-  const double iterations = double(state.iterations());
-  const auto rate = [&](double per_call) {
-    return benchmark::Counter(per_call * iterations, benchmark::Counter::kIsRate);
-  };
-  state.counters["triangles"] = rate(double(triangles));
-  state.counters["fragments"] = rate(double(last.fragments));
-  state.counters["written"] = rate(double(last.fragments_passed));
+  report_draws(state, last, isa, triangles, c.area, target);
   state.counters["threads"] = double(default_thread_count());
 }
 
