@@ -705,13 +705,13 @@ bool same_counts(const DrawReport& a, const DrawReport& b) {
 }
 
 // The screen triangles draw() hands to the shading kernels for one mesh triangle: the vertex
-// stage of render.cpp replayed through the public clipper (identical on every ISA, so this only
-// has to name the writer of each pixel and its attributes).
+// stage (kernels/src/vertex_stage.cpp) replayed through the public clipper (identical on every
+// ISA, so this only has to name the writer of each pixel and its attributes).
 struct Piece {
   Vec2 snapped[3];
   ScreenTriangle screen;
   VertexAttributes attributes;
-  Vec2 uvs[3];  // (0, 0) untextured, as render.cpp passes them
+  Vec2 uvs[3];  // (0, 0) untextured, as the vertex stage passes them
 };
 
 float snap(float v) {
@@ -746,7 +746,7 @@ void append_pieces(const Case& c, const std::uint32_t corner[3], std::vector<Pie
   } else if (polygon.status == ClipStatus::clipped) {
     for (int k = 0; k < polygon.count; ++k) {
       const ClipVertex& v = polygon.vertices[k];
-      // render.cpp's blend, operation for operation.
+      // The vertex stage's blend of clipped attributes, operation for operation.
       const auto blend = [&v](float a, float b, float d) { return v.b0 * a + v.b1 * b + v.b2 * d; };
       fan.push_back(
           {v.position,
