@@ -86,6 +86,14 @@ std::string check(const DrawReport& report, Isa isa, std::size_t triangles, int 
   return {};
 }
 
+// The scene's first `triangles` triangles as a mesh.
+DrawMesh first_triangles(const ShadingScene& s, std::size_t triangles) {
+  DrawMesh mesh;
+  mesh.positions = std::span(s.positions).first(3 * triangles);
+  mesh.colors = std::span(s.colors).first(3 * triangles);
+  return mesh;
+}
+
 // The run's checks and rate counters. Every call redraws the same set into a cleared target:
 // the same counts each iteration.
 void report_draws(benchmark::State& state, const DrawReport& last, Isa isa, std::size_t triangles,
@@ -103,11 +111,8 @@ void report_draws(benchmark::State& state, const DrawReport& last, Isa isa, std:
 
 void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
                 const DrawOptions& options) {
-  const ShadingScene& s = shading_scene(camera, c);
   const std::size_t triangles = triangles_for(isa, c);
-  DrawMesh mesh;
-  mesh.positions = std::span(s.positions).first(3 * triangles);
-  mesh.colors = std::span(s.colors).first(3 * triangles);
+  const DrawMesh mesh = first_triangles(shading_scene(camera, c), triangles);
   Framebuffer target(kWidth, kHeight);
 
   DrawReport last;
@@ -150,11 +155,8 @@ void shading(benchmark::State& state, Isa isa, ShadingCase c) {
 void shading_all_threads(benchmark::State& state, Isa isa, ShadingCase c) {
   DrawOptions options = shading_options(isa, Camera::orthographic);
   options.threads = 0;
-  const ShadingScene& s = shading_scene(Camera::orthographic, c);
   const std::size_t triangles = triangles_for(isa, c);
-  DrawMesh mesh;
-  mesh.positions = std::span(s.positions).first(3 * triangles);
-  mesh.colors = std::span(s.colors).first(3 * triangles);
+  const DrawMesh mesh = first_triangles(shading_scene(Camera::orthographic, c), triangles);
   Framebuffer target(kWidth, kHeight);
   DrawReport last;
   for (auto _ : state) {

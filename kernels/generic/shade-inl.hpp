@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include <xsimd/xsimd.hpp>
 
@@ -47,11 +48,10 @@ class ShadingVisitor {
         reject_hidden_(
             batch.tile_max_depth != nullptr && batch.hierarchical_depth &&
             (batch.depth_test == DepthTest::less || batch.depth_test == DepthTest::less_equal)),
-        textured_(batch.texture_description != nullptr) {
-    // Model no more than the scene needs: Gouraud colour by plane equations interpolates the
-    // colours directly, and then, untextured, needs nothing per triangle beyond the planes.
-    needs_vertices_ = textured_ || batch.normals != nullptr || !colour_planes_;
-  }
+        textured_(batch.texture_description != nullptr),
+        // Model no more than the scene needs: Gouraud colour by plane equations interpolates the
+        // colours directly, and then, untextured, needs nothing per triangle beyond the planes.
+        needs_vertices_(textured_ || batch.normals != nullptr || !colour_planes_) {}
 
   // The depth and colour planes of a group of triangles (plane_setup-inl.hpp), before
   // begin_triangle() for each.
@@ -85,7 +85,6 @@ class ShadingVisitor {
     max_vertex_depth_ = group_.max_depth[l];
     if (colour_planes_) {
       perspective_ = group_.perspective[l];
-      planes_used_ = perspective_ ? kPlanes : 4;
       for (int k = 0; k < kPlanes; ++k)
         plane_[k] = group_.colour[k][l];
     }
@@ -164,28 +163,10 @@ class ShadingVisitor {
     if (textured_) {
       shade_textured_rows(mask, rows, depth, color, px, py, columns, colour_row_bases, stored_max);
     } else {
-      switch (batch_.depth_test) {
-        case DepthTest::less:
-          shade_rows<DepthTest::less>(mask, rows, depth, color, px, py, columns, colour_row_bases,
-                                      stored_max);
-          break;
-        case DepthTest::less_equal:
-          shade_rows<DepthTest::less_equal>(mask, rows, depth, color, px, py, columns,
-                                            colour_row_bases, stored_max);
-          break;
-        case DepthTest::greater:
-          shade_rows<DepthTest::greater>(mask, rows, depth, color, px, py, columns,
-                                         colour_row_bases, stored_max);
-          break;
-        case DepthTest::always:
-          shade_rows<DepthTest::always>(mask, rows, depth, color, px, py, columns, colour_row_bases,
-                                        stored_max);
-          break;
-        case DepthTest::never:
-          shade_rows<DepthTest::never>(mask, rows, depth, color, px, py, columns, colour_row_bases,
-                                       stored_max);
-          break;
-      }
+      with_depth_test([&](auto test) {
+        shade_rows<decltype(test)::value>(mask, rows, depth, color, px, py, columns,
+                                          colour_row_bases, stored_max);
+      });
     }
     if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
   }
@@ -204,18 +185,7 @@ class ShadingVisitor {
       }
       return;
     }
-    switch (batch_.depth_test) {
-      case DepthTest::less:
-        return shade_grid<DepthTest::less>(tile_x, tile_y, masks);
-      case DepthTest::less_equal:
-        return shade_grid<DepthTest::less_equal>(tile_x, tile_y, masks);
-      case DepthTest::greater:
-        return shade_grid<DepthTest::greater>(tile_x, tile_y, masks);
-      case DepthTest::always:
-        return shade_grid<DepthTest::always>(tile_x, tile_y, masks);
-      case DepthTest::never:
-        return shade_grid<DepthTest::never>(tile_x, tile_y, masks);
-    }
+    with_depth_test([&](auto test) { shade_grid<decltype(test)::value>(tile_x, tile_y, masks); });
   }
 
   template <DepthTest Test, std::size_t N>
@@ -308,7 +278,7 @@ class ShadingVisitor {
           Floats(depth_.x0);
       columns.depth[h] = Floats(depth_.dzdx) * dx;
       if (colour_planes_) {
-        for (int k = 0; k < planes_used_; ++k)
+        for (int k = 0; k < planes_used(); ++k)
           columns.colour[k][h] = Floats(plane_[k].dx) * dx;
       }
     }
@@ -321,7 +291,7 @@ class ShadingVisitor {
       const Floats dy =
           interpolation_detail::lane_centers<Arch>(py + static_cast<std::int32_t>(h * kLanes)) -
           Floats(depth_.y0);
-      for (int k = 0; k < planes_used_; ++k) {
+      for (int k = 0; k < planes_used(); ++k) {
         (Floats(plane_[k].at_vertex) + Floats(plane_[k].dy) * dy)
             .store_aligned(&colour_row_bases[k][h * kLanes]);
       }
@@ -527,28 +497,36 @@ class ShadingVisitor {
     return write;
   }
 
+  // f(std::integral_constant<DepthTest, test>) for the batch's test: the one place a test chosen
+  // at run time becomes a template argument.
+  template <class F>
+  [[gnu::always_inline]] decltype(auto) with_depth_test(F&& f) const {
+    switch (batch_.depth_test) {
+      case DepthTest::less:
+        return f(std::integral_constant<DepthTest, DepthTest::less>{});
+      case DepthTest::less_equal:
+        return f(std::integral_constant<DepthTest, DepthTest::less_equal>{});
+      case DepthTest::greater:
+        return f(std::integral_constant<DepthTest, DepthTest::greater>{});
+      case DepthTest::always:
+        return f(std::integral_constant<DepthTest, DepthTest::always>{});
+      case DepthTest::never:
+        break;
+    }
+    return f(std::integral_constant<DepthTest, DepthTest::never>{});
+  }
+
+  // Colour planes in use: the fifth, 1 / w, only for perspective-correct colour.
+  int planes_used() const { return perspective_ ? kPlanes : 4; }
+
   // depth_step() with the test chosen per call.
   [[gnu::always_inline]] Mask depth_step_any_test(float* depth, int row, std::size_t h,
                                                   Floats row_base, Floats depth_column,
                                                   std::uint32_t row_mask, Floats& stored_max) {
-    switch (batch_.depth_test) {
-      case DepthTest::less:
-        return depth_step<DepthTest::less>(depth, row, h, row_base, depth_column, row_mask,
-                                           stored_max);
-      case DepthTest::less_equal:
-        return depth_step<DepthTest::less_equal>(depth, row, h, row_base, depth_column, row_mask,
-                                                 stored_max);
-      case DepthTest::greater:
-        return depth_step<DepthTest::greater>(depth, row, h, row_base, depth_column, row_mask,
-                                              stored_max);
-      case DepthTest::always:
-        return depth_step<DepthTest::always>(depth, row, h, row_base, depth_column, row_mask,
-                                             stored_max);
-      case DepthTest::never:
-        break;
-    }
-    return depth_step<DepthTest::never>(depth, row, h, row_base, depth_column, row_mask,
-                                        stored_max);
+    return with_depth_test([&](auto test) {
+      return depth_step<decltype(test)::value>(depth, row, h, row_base, depth_column, row_mask,
+                                               stored_max);
+    });
   }
 
   // Blended as floats: a blend moves bits without arithmetic, so every colour survives as is.
@@ -718,7 +696,7 @@ class ShadingVisitor {
   const bool colour_planes_;  // Gouraud colour from the group's planes
   const bool keep_bounds_, reject_hidden_;
   const bool textured_;
-  bool needs_vertices_ = true;  // begin_triangle() reads the vertices for more than the planes
+  const bool needs_vertices_;  // begin_triangle() reads the vertices for more than the planes
   // The current group's planes and triangle.
   std::size_t group_first_ = 0;
   PlaneGroup<Arch> group_{};
@@ -734,7 +712,6 @@ class ShadingVisitor {
   static constexpr std::uint32_t kNoTileRow = UINT32_MAX;
   std::uint32_t row_bases_tile_y_ = kNoTileRow;
   alignas(64) float row_bases_[kPlanes][kTileSize];
-  int planes_used_ = 4;  // the fifth, 1 / w, only for perspective-correct colour
   // Counts.
   std::uint64_t fragments_ = 0;
   std::uint64_t tiles_skipped_ = 0;
