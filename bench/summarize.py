@@ -33,8 +33,8 @@ TARGET = {8: 50e6, 64: 25e6, 1000: 8e6, 200000: 0.5e6}
 TARGET_AVX2_OVER_REFERENCE_AT_1000 = 8.0
 # Shading targets (AVX2, one core): (counter, rate) per area; small triangles are bound by
 # per-triangle work, large ones by per-fragment work.
-SHADING_TARGET = {8: ("triangles", 35e6), 64: ("triangles", 15e6), 1000: ("fragments", 1.2e9),
-                  200000: ("fragments", 2e9)}
+SHADING_TARGET = {8: ("triangles", 15e6), 64: ("triangles", 8e6), 1000: ("fragments", 1.2e9),
+                  200000: ("fragments", 4e9)}
 # The reference draws the first 1/REFERENCE_SHARE of each shading set (bench/draw_bench.cpp).
 REFERENCE_SHARE = 16
 # The production interpolation setting, which the method table is relative to.
