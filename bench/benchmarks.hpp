@@ -23,8 +23,13 @@ void register_sample_benchmarks();
 // TexturedDraw/<isa>/<filter>/<derivatives>: the ground-plane view drawn textured.
 void register_textured_draw_benchmarks();
 
+// MeshDraw/<isa>/[threads:all/]<mesh>: draw() on the real meshes of EDGEWISE_BENCH_MESHES
+// (mesh_scenes.hpp), when built with the OBJ loader.
+void register_mesh_draw_benchmarks();
+
 // DrawPeer/llvmpipe/<threads:1|threads:default>/<workload>: Mesa's llvmpipe drawing the Shading/
-// workloads and the trilinear TexturedDraw/ one, when built with EGL and OpenGL.
+// workloads, the trilinear TexturedDraw/ one and the MeshDraw/ meshes, when built with EGL and
+// OpenGL.
 void register_draw_peer_benchmarks();
 
 }  // namespace edgewise::bench

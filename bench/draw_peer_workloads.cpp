@@ -3,16 +3,20 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <vector>
 
 #include "shading_scene.hpp"
 #if defined(EDGEWISE_BENCH_SAMPLING)
 #include "bench_texture.hpp"
 #endif
+#if defined(EDGEWISE_BENCH_MESHES)
+#include "mesh_scenes.hpp"
+#endif
 
 namespace edgewise::bench {
 namespace {
 
-constexpr std::string_view kNames[] = {
+constexpr std::string_view kFixedNames[] = {
     "area:8",
     "area:64",
     "area:1000",
@@ -47,13 +51,35 @@ std::unique_ptr<PeerWorkload> build(std::string_view name) {
     return w;
   }
 #endif
+#if defined(EDGEWISE_BENCH_MESHES)
+  for (const MeshScene& scene : mesh_scenes()) {
+    if (name != "mesh/" + scene.name) continue;
+    w->mesh = draw_mesh(scene);
+    w->options = mesh_options(active_isa(), scene);
+    w->clear_color = kMeshClearColor;
+    w->clear_depth = kMeshClearDepth;
+    w->triangles = scene.mesh.indices.size() / 3;
+    return w;
+  }
+#endif
   return nullptr;
+}
+
+std::vector<std::string> all_names() {
+  std::vector<std::string> names(std::begin(kFixedNames), std::end(kFixedNames));
+#if defined(EDGEWISE_BENCH_MESHES)
+  for (const MeshScene& scene : mesh_scenes())
+    names.push_back("mesh/" + scene.name);
+#endif
+  return names;
 }
 
 }  // namespace
 
 std::span<const std::string_view> peer_workload_names() {
-  return kNames;
+  static const std::vector<std::string> names = all_names();
+  static const std::vector<std::string_view> views(names.begin(), names.end());
+  return views;
 }
 
 const PeerWorkload* find_peer_workload(std::string_view name) {

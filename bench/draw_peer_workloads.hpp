@@ -1,7 +1,9 @@
 // The workloads DrawPeer/ measures: the draw() calls that Shading/ and TexturedDraw/ time, by
 // name, for a peer renderer to draw from the same vertex arrays with the same settings:
 // - area:<px>: Shading/<isa>/area:<px> (shading_scene.hpp);
-// - ground_plane/trilinear: TexturedDraw/<isa>/trilinear/quad (bench_texture.hpp).
+// - ground_plane/trilinear: TexturedDraw/<isa>/trilinear/quad (bench_texture.hpp);
+// - mesh/<name>: MeshDraw/<isa>/<name>, a real mesh (mesh_scenes.hpp), when built with the OBJ
+//   loader and EDGEWISE_BENCH_MESHES names a folder of OBJ files.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +18,7 @@ namespace edgewise::bench {
 // One draw() call into a kWidth x kHeight target cleared to clear_color and clear_depth.
 struct PeerWorkload {
   std::string name;  // the last part of the benchmark's name
-  DrawMesh mesh;     // non-indexed
+  DrawMesh mesh;
   DrawOptions options;
   Vec4 clear_color;
   float clear_depth;

@@ -94,6 +94,30 @@ out vec4 pixel;
 void main() { pixel = texture(image, st); }
 )";
 
+// Per-pixel diffuse on white vertices, as edgewise's Shading::diffuse: the interpolated normal,
+// renormalized, lights the pixel by ambient + (1 - ambient) max(0, n . l).
+constexpr const char* kDiffuseVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+uniform mat4 to_clip;
+out vec3 n;
+void main() {
+  gl_Position = to_clip * vec4(position, 1.0);
+  n = normal;
+}
+)";
+constexpr const char* kDiffuseFragmentShader = R"(#version 330 core
+uniform vec3 light;
+uniform float ambient;
+in vec3 n;
+out vec4 pixel;
+void main() {
+  float len = length(n);
+  float lambert = len > 0.0 ? max(dot(n, light) / len, 0.0) : 0.0;
+  pixel = vec4(vec3(ambient + (1.0 - ambient) * lambert), 1.0);
+}
+)";
+
 GLuint compile(GLenum stage, const char* source, std::string& error) {
   const GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &source, nullptr);
@@ -145,15 +169,15 @@ void upload_attribute(GLuint buffer, GLuint location, std::span<const T> values)
 std::string unsupported(const PeerWorkload& workload) {
   const DrawMesh& mesh = workload.mesh;
   const DrawOptions& o = workload.options;
-  if (!mesh.indices.empty()) return "indexed meshes";
-  if (o.cull != CullMode::none || o.scissor) return "culling or a scissor";
+  if (o.scissor) return "a scissor";
   if (o.interpolation != InterpolationMethod::plane_equations ||
       o.perspective != Perspective::correct) {
     return "interpolation other than plane equations, perspective-correct";
   }
   if (!o.texture) {
-    if (o.shading != Shading::gouraud || mesh.colors.empty()) return "shading other than Gouraud";
-    return {};
+    if (o.shading == Shading::gouraud && !mesh.colors.empty()) return {};
+    if (o.shading == Shading::diffuse && mesh.colors.empty() && !mesh.normals.empty()) return {};
+    return "shading other than Gouraud or diffuse on white vertices";
   }
   const Texture& texture = *o.texture->texture;
   const SamplerOptions& sampler = o.texture->sampler;
@@ -175,8 +199,9 @@ struct LlvmpipePeer::Context {
   EGLContext context = EGL_NO_CONTEXT;
   GLuint framebuffer = 0, color = 0, depth = 0, query = 0;
   // The loaded workload.
-  GLuint vertex_array = 0, buffers[2] = {}, program = 0, texture = 0;
-  GLsizei vertices = 0;
+  GLuint vertex_array = 0, buffers[3] = {}, program = 0, texture = 0;
+  GLsizei vertices = 0;  // or indices, when indexed
+  bool indexed = false;
   GLenum depth_function = GL_LESS;
   bool depth_write = true;
   Vec4 clear_color{};
@@ -184,11 +209,13 @@ struct LlvmpipePeer::Context {
 
   void release_workload() {
     glDeleteVertexArrays(1, &vertex_array);
-    glDeleteBuffers(2, buffers);
+    glDeleteBuffers(3, buffers);
     glDeleteProgram(program);
     glDeleteTextures(1, &texture);
-    vertex_array = buffers[0] = buffers[1] = program = texture = 0;
+    vertex_array = buffers[0] = buffers[1] = buffers[2] = program = texture = 0;
     vertices = 0;
+    indexed = false;
+    glDisable(GL_CULL_FACE);
   }
 
   ~Context() {
@@ -317,8 +344,10 @@ bool LlvmpipePeer::load(const PeerWorkload& workload, std::string& error) {
   const DrawMesh& mesh = workload.mesh;
   const DrawOptions& options = workload.options;
   const bool textured = options.texture.has_value();
-  c.program = textured ? link(kTextureVertexShader, kTextureFragmentShader, error)
-                       : link(kColorVertexShader, kColorFragmentShader, error);
+  const bool diffuse = !textured && options.shading == Shading::diffuse;
+  c.program = textured  ? link(kTextureVertexShader, kTextureFragmentShader, error)
+              : diffuse ? link(kDiffuseVertexShader, kDiffuseFragmentShader, error)
+                        : link(kColorVertexShader, kColorFragmentShader, error);
   if (c.program == 0) return false;
   glUseProgram(c.program);
   Mat4 to_clip = options.transform;
@@ -329,14 +358,33 @@ bool LlvmpipePeer::load(const PeerWorkload& workload, std::string& error) {
 
   glGenVertexArrays(1, &c.vertex_array);
   glBindVertexArray(c.vertex_array);
-  glGenBuffers(2, c.buffers);
+  glGenBuffers(3, c.buffers);
   upload_attribute(c.buffers[0], 0, mesh.positions);
   if (textured) {
     upload_attribute(c.buffers[1], 1, mesh.uvs);
+  } else if (diffuse) {
+    upload_attribute(c.buffers[1], 1, mesh.normals);
+    const Vec3 l = options.light_direction;
+    glUniform3f(glGetUniformLocation(c.program, "light"), l.x, l.y, l.z);
+    glUniform1f(glGetUniformLocation(c.program, "ambient"), options.ambient);
   } else {
     upload_attribute(c.buffers[1], 1, mesh.colors);
   }
-  c.vertices = GLsizei(mesh.positions.size());
+  c.indexed = !mesh.indices.empty();
+  if (c.indexed) {
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, c.buffers[2]);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
+                 mesh.indices.data(), GL_STATIC_DRAW);
+  }
+  c.vertices = GLsizei(c.indexed ? mesh.indices.size() : mesh.positions.size());
+  // edgewise's windings are on its screen (y down); after the vertical flip GL's window
+  // coordinates are the same numbers read y up, so each winding is GL's opposite: edgewise's
+  // clockwise is GL's counter-clockwise.
+  if (options.cull != CullMode::none) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(options.cull == CullMode::clockwise ? GL_CW : GL_CCW);
+  }
 
   if (textured) {
     const Texture& texture = *options.texture->texture;
@@ -379,7 +427,11 @@ void LlvmpipePeer::clear() {
 }
 
 void LlvmpipePeer::draw() {
-  glDrawArrays(GL_TRIANGLES, 0, context_->vertices);
+  if (context_->indexed) {
+    glDrawElements(GL_TRIANGLES, context_->vertices, GL_UNSIGNED_INT, nullptr);
+  } else {
+    glDrawArrays(GL_TRIANGLES, 0, context_->vertices);
+  }
 }
 
 PeerCounts LlvmpipePeer::count() {

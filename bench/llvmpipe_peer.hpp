@@ -12,6 +12,9 @@
 //   (without the flip, pixel centres exactly on an edge are decided the other way);
 // - Gouraud (the shading workload): the vertex colours, interpolated (edgewise's Gouraud has no
 //   lighting; that is Shading::diffuse);
+// - diffuse (the real meshes): white vertices lit per pixel by the renormalized interpolated
+//   normal, as Shading::diffuse; indexed meshes through an element buffer; back faces culled
+//   (edgewise's windings are on its y-down screen, GL's opposite after the flip);
 // - textured (flat white shading times the texture): the texture's own mip levels, filtered with
 //   GL_LINEAR_MIPMAP_LINEAR and GL_REPEAT, as edgewise's trilinear filter.
 // load() refuses other settings.

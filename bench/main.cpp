@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
   edgewise::bench::register_sample_benchmarks();
   edgewise::bench::register_textured_draw_benchmarks();
 #endif
+#if defined(EDGEWISE_BENCH_MESHES)
+  edgewise::bench::register_mesh_draw_benchmarks();
+#endif
 #if defined(EDGEWISE_BENCH_LLVMPIPE)
   edgewise::bench::register_draw_peer_benchmarks();
 #endif

@@ -14,7 +14,9 @@ the scalar reference, and the comparison with published peer figures and with th
 - TexturedDraw/*: textured pixels/s of draw() on the same ground-plane view per filter, ISA and
   derivative method, beside sample()'s rate on the view's queries;
 - DrawPeer/*: Mesa's llvmpipe on the Shading/ workloads and the trilinear TexturedDraw/ one, one
-  thread and its default threads, beside edgewise (the widest ISA measured): edgewise / llvmpipe.
+  thread and its default threads, beside edgewise (the widest ISA measured): edgewise / llvmpipe;
+- MeshDraw/* with DrawPeer/*/mesh/*: real meshes (per-pixel diffuse, back faces culled), edgewise
+  against llvmpipe per mesh on one thread and on every core, and the median ratio over the meshes.
 
 Usage: /usr/bin/python3 bench/summarize.py FILE.json [FILE.json ...]
   e.g. bench/results/<cpu-model>/coverage.json bench/results/<cpu-model>/shading.json
@@ -63,6 +65,8 @@ DRAW_NAME = re.compile(
 PEER_NAME = re.compile(r"^SamplePeer/oiio/(?P<mode>[a-z0-9_]+)/(?P<stream>[a-z_]+)$")
 DRAW_PEER_NAME = re.compile(r"^DrawPeer/(?P<peer>[a-z0-9_]+)/threads:(?P<threads>[a-z0-9]+)/"
                             r"(?P<workload>.+?)(/manual_time)?$")
+MESH_DRAW_NAME = re.compile(r"^MeshDraw/(?P<isa>[a-z0-9_]+)/(?P<threads>threads:all/)?"
+                            r"(?P<mesh>[^/]+?)(/real_time)?$")
 # The drawing peer's workloads: the edgewise benchmark each repeats (bench/draw_peer_workloads.hpp)
 # and the rate compared, as the shading targets count it.
 DRAW_PEER_WORKLOADS = {
@@ -398,6 +402,9 @@ def print_draw_peers(peers, shading, draws):
         return entry if entry and "error" not in entry else None
 
     workloads = [w for w in DRAW_PEER_WORKLOADS if any(k[1] == w for k in peers)]
+    if not workloads:
+        print("drawing peer: only the meshes were measured (below)")
+        return
     measured = [isa for isa in ISA_ORDER if isa != "reference" and
                 any(edgewise_entry(w, isa) for w in workloads)]
     isa = measured[-1] if measured else None
@@ -438,6 +445,57 @@ def print_draw_peers(peers, shading, draws):
               "samples differ by 'written diff' per draw (depth rounding at near-ties)")
 
 
+def print_meshes(meshes, draw_peers):
+    """Real meshes: frame times of edgewise (one thread; every core) and llvmpipe (one thread;
+    its default threads), their ratios per mesh and the median ratio over the meshes."""
+    isas = sorted({k[1] for k in meshes}, key=isa_key)
+    isa = isas[-1] if isas else None
+    names = sorted({k[0] for k in meshes if k[1] == isa})
+    print(f"real meshes (MeshDraw/{isa}: per-pixel diffuse, back faces culled, perspective, "
+          "1920x1080): ms per draw() call, and llvmpipe's time / edgewise's (> 1: edgewise faster)")
+    header = ["mesh", "triangles", "fragments", f"{isa} 1 thread", "llvmpipe 1 thread",
+              "ratio 1", f"{isa} all cores", "llvmpipe default", "ratio all", "edgewise all / 1"]
+    rows, ratios_one, ratios_all, scaling = [], [], [], []
+
+    def seconds(entry, clock):
+        if not entry or "error" in entry:
+            return None
+        unit = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[entry.get("time_unit", "ns")]
+        return entry[clock] * unit
+
+    for name in names:
+        one = meshes.get((name, isa, False))
+        every = meshes.get((name, isa, True))
+        peer_one = draw_peers.get(("llvmpipe", "mesh/" + name, "1"))
+        peer_all = draw_peers.get(("llvmpipe", "mesh/" + name, "default"))
+        # The peer's manual times (its own CPU or wall-clock time) are its real_time field.
+        t_one, t_all = seconds(one, "cpu_time"), seconds(every, "real_time")
+        p_one, p_all = seconds(peer_one, "real_time"), seconds(peer_all, "real_time")
+        row = [name, si(one["triangles"] * t_one, "") if t_one else "-",
+               si(one["fragments"] * t_one, "") if t_one else "-"]
+        row += [f"{t_one * 1e3:.2f}" if t_one else "-", f"{p_one * 1e3:.2f}" if p_one else "-"]
+        row.append(ratio(p_one, t_one) if p_one and t_one else "-")
+        row += [f"{t_all * 1e3:.2f}" if t_all else "-", f"{p_all * 1e3:.2f}" if p_all else "-"]
+        row.append(ratio(p_all, t_all) if p_all and t_all else "-")
+        row.append(ratio(t_one, t_all) if t_one and t_all else "-")
+        if p_one and t_one:
+            ratios_one.append(p_one / t_one)
+        if p_all and t_all:
+            ratios_all.append(p_all / t_all)
+        if t_one and t_all:
+            scaling.append(t_one / t_all)
+        rows.append(row)
+    print_table(header, rows)
+    for label, values in (("edgewise 1 thread / llvmpipe 1 thread", ratios_one),
+                          ("edgewise all cores / llvmpipe default threads", ratios_all),
+                          ("edgewise all cores / edgewise 1 thread", scaling)):
+        if values:
+            print(f"median over {len(values)} meshes, {label}: {statistics.median(values):.3g}x "
+                  f"(min {min(values):.3g}x, max {max(values):.3g}x)")
+    print("llvmpipe times are its DrawPeer/ medians (1 thread: CPU time; default: wall-clock); "
+          "edgewise 1 thread: CPU time; all cores: wall-clock time")
+
+
 def main(argv):
     if len(argv) < 2:
         print(__doc__.strip(), file=sys.stderr)
@@ -465,8 +523,10 @@ def main(argv):
     draws = collect(results, DRAW_NAME, lambda m: (m["filter"], m["isa"], m["derivatives"]))
     draw_peers = collect(results, DRAW_PEER_NAME,
                          lambda m: (m["peer"], m["workload"], m["threads"]))
+    meshes = collect(results, MESH_DRAW_NAME,
+                     lambda m: (m["mesh"], m["isa"], m["threads"] is not None))
     clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
-    if not (coverage or shading or methods or samples or draws or draw_peers):
+    if not (coverage or shading or methods or samples or draws or draw_peers or meshes):
         print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/*, ShadingMethod/*, Sample/*, "
               "TexturedDraw/* or DrawPeer/* benchmarks", file=sys.stderr)
         return 1
@@ -478,7 +538,8 @@ def main(argv):
                                        (print_sampling, samples, (samples, peers)),
                                        (print_textured_draw, draws, (draws, samples)),
                                        (print_draw_peers, draw_peers,
-                                        (draw_peers, shading, draws))):
+                                        (draw_peers, shading, draws)),
+                                       (print_meshes, meshes, (meshes, draw_peers))):
         if found:
             print()
             title_printer(*args)

@@ -1,0 +1,105 @@
+#include "mesh_scenes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <numbers>
+#include <vector>
+
+#include "benchmarks.hpp"
+#include "scene/obj_loader.hpp"
+
+namespace edgewise::bench {
+namespace {
+
+constexpr float kFovRadians = 45.0f * std::numbers::pi_v<float> / 180.0f;
+// From above, the right and the front: every mesh shows sides that a view along an axis hides.
+constexpr Vec3 kViewDirection{0.35f, 0.3f, 0.89f};
+constexpr Vec3 kLightDirection{0.4f, 0.6f, 0.7f};
+
+Vec3 normalized(Vec3 v) {
+  const float length = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+  return {v.x / length, v.y / length, v.z / length};
+}
+
+// The view of the top of mesh_scenes.hpp for a mesh whose box is `box`.
+Mat4 framing_transform(const scene::Box3& box) {
+  const Vec3 centre{0.5f * (box.min.x + box.max.x), 0.5f * (box.min.y + box.max.y),
+                    0.5f * (box.min.z + box.max.z)};
+  const Vec3 half{0.5f * (box.max.x - box.min.x), 0.5f * (box.max.y - box.min.y),
+                  0.5f * (box.max.z - box.min.z)};
+  const float radius =
+      std::max(std::sqrt(half.x * half.x + half.y * half.y + half.z * half.z), 1e-6f);
+  const float distance = radius / std::sin(0.5f * kFovRadians);
+  const Vec3 d = normalized(kViewDirection);
+  const Vec3 eye{centre.x + distance * d.x, centre.y + distance * d.y, centre.z + distance * d.z};
+  const float near_plane = std::max(distance - 1.05f * radius, 1e-3f * distance);
+  const float far_plane = distance + 1.05f * radius;
+  return perspective(kFovRadians, float(kWidth) / float(kHeight), near_plane, far_plane) *
+         look_at(eye, centre, Vec3{0.0f, 1.0f, 0.0f});
+}
+
+std::vector<MeshScene> load_meshes() {
+  std::vector<MeshScene> scenes;
+  const char* folder = std::getenv("EDGEWISE_BENCH_MESHES");
+  if (folder == nullptr || *folder == '\0') return scenes;
+  std::error_code error;
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".obj")
+      files.push_back(entry.path());
+  }
+  if (error) std::cerr << "EDGEWISE_BENCH_MESHES: " << folder << ": " << error.message() << "\n";
+  std::sort(files.begin(), files.end());
+  scene::ObjLoadOptions options;
+  options.load_materials = false;  // white, diffuse: the colours do not change the work
+  for (const auto& file : files) {
+    scene::MeshResult result = scene::load_obj(file.string(), options);
+    if (!result) {
+      std::cerr << result.error() << " (left out of the mesh benchmarks)\n";
+      continue;
+    }
+    MeshScene s;
+    s.name = file.stem().string();
+    s.mesh = std::move(result).mesh();
+    s.mesh.colors.clear();
+    s.mesh.uvs.clear();
+    const std::optional<scene::Box3> box = scene::bounding_box(s.mesh);
+    if (!box) continue;
+    s.transform = framing_transform(*box);
+    scenes.push_back(std::move(s));
+  }
+  return scenes;
+}
+
+}  // namespace
+
+std::span<const MeshScene> mesh_scenes() {
+  static const std::vector<MeshScene> scenes = load_meshes();
+  return scenes;
+}
+
+DrawOptions mesh_options(Isa isa, const MeshScene& scene) {
+  DrawOptions options;
+  options.transform = scene.transform;
+  options.cull = CullMode::clockwise;  // the back faces of counter-clockwise (OBJ) meshes
+  options.depth_test = DepthTest::less;
+  options.depth_write = true;
+  options.shading = Shading::diffuse;
+  options.light_direction = normalized(kLightDirection);
+  options.isa = isa;
+  options.threads = 1;
+  return options;
+}
+
+DrawMesh draw_mesh(const MeshScene& scene) {
+  DrawMesh mesh;
+  mesh.positions = scene.mesh.positions;
+  mesh.normals = scene.mesh.normals;
+  mesh.indices = scene.mesh.indices;
+  return mesh;
+}
+
+}  // namespace edgewise::bench
