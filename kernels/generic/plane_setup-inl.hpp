@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include <xsimd/xsimd.hpp>
 
@@ -24,6 +25,14 @@ struct ColourPlane {
 // Colour planes per triangle: R, G, B and A scaled to 0 .. 255 and, for perspective-correct
 // colour, the plane of 1 / w (each channel then a plane of value / w).
 inline constexpr int kColourPlanes = 5;
+// Diffuse shading adds the planes of the normal's three components (of n / w when perspective-
+// correct), after the colour planes. They are never divided by the plane of 1 / w: the light
+// depends on n / |n| only, and dividing every component by the same positive value leaves that
+// unchanged. Each lane's normal planes are scaled by one factor that brings the largest vertex
+// value to 1, for the same reason: float32 squared lengths then neither overflow nor underflow.
+inline constexpr int kNormalPlanes = 3;
+inline constexpr int kFirstNormalPlane = kColourPlanes;
+inline constexpr int kShadingPlanes = kColourPlanes + kNormalPlanes;
 
 // The inputs of a group, gathered per lane from the triangles' vertices in their original
 // order (corner 0 is the planes' origin).
@@ -34,6 +43,7 @@ struct PlaneGroupInput {
   alignas(64) double z[3][kLanes];                // depth z / w
   alignas(64) double w[3][kLanes];                // clip-space w
   alignas(64) double colour[3][4][kLanes];        // RGBA
+  alignas(64) double normal[3][3][kLanes];        // xyz, for diffuse shading
 };
 
 // What the group's set-up gives each lane.
@@ -42,17 +52,19 @@ struct PlaneGroup {
   static constexpr std::size_t kLanes = kSetupLanes<Arch>;
   float x0[kLanes], y0[kLanes];  // corner 0, the planes' origin
   float z0[kLanes], dzdx[kLanes], dzdy[kLanes];
-  float max_depth[kLanes];   // the largest vertex depth
-  bool perspective[kLanes];  // colour divides by the plane of 1 / w
-  ColourPlane colour[kColourPlanes][kLanes];
+  float max_depth[kLanes];                     // the largest vertex depth
+  bool perspective[kLanes];                    // colour divides by the plane of 1 / w
+  ColourPlane colour[kShadingPlanes][kLanes];  // colour, then normal planes
 };
 
-// Sets up the lanes of `in`: depth slopes always, colour planes when `colour_planes`. With
-// `perspective_correct`, a lane's colour is perspective-correct when its three w are usable
-// (kMinClipW <= w <= kMaxClipW) and not all equal, as the scalar shading decides.
+// Sets up the lanes of `in`: depth slopes always, colour planes when `colour_planes`, normal
+// planes too when `normal_planes`. With `perspective_correct`, a lane's colour and normal are
+// perspective-correct when its three w are usable (kMinClipW <= w <= kMaxClipW) and not all
+// equal, as the scalar shading decides.
 template <class Arch>
 inline void set_up_plane_group(const PlaneGroupInput<Arch>& in, bool colour_planes,
-                               bool perspective_correct, PlaneGroup<Arch>& out) {
+                               bool normal_planes, bool perspective_correct,
+                               PlaneGroup<Arch>& out) {
   using D = xsimd::batch<double, Arch>;
   constexpr std::size_t kLanes = kSetupLanes<Arch>;
   const auto at = [](const double* lanes) { return D::load_aligned(lanes); };
@@ -107,6 +119,27 @@ inline void set_up_plane_group(const PlaneGroupInput<Arch>& in, bool colour_plan
   }
   for (std::size_t l = 0; l < kLanes; ++l)
     out.perspective[l] = divided[l] != 0.0;
+  if (!normal_planes) return;
+
+  D f[3][kNormalPlanes];
+  D largest(0.0);
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < kNormalPlanes; ++k) {
+      f[i][k] = at(in.normal[i][k]) * inverse_w[i];
+      largest = xsimd::max(largest, xsimd::abs(f[i][k]));
+    }
+  }
+  // Zero, NaN or infinite normals keep their values (the light is then 0 or undefined either way).
+  const auto scalable = largest > D(0.0) && largest < D(std::numeric_limits<double>::infinity());
+  const D scale = xsimd::select(scalable, D(1.0) / largest, D(1.0));
+  for (int k = 0; k < kNormalPlanes; ++k) {
+    (f[0][k] * scale).store_aligned(at_vertex);
+    slopes((f[1][k] - f[0][k]) * scale, (f[2][k] - f[0][k]) * scale, dx, dy);
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      out.colour[kFirstNormalPlane + k][l] = {static_cast<float>(at_vertex[l]),
+                                              static_cast<float>(dx[l]), static_cast<float>(dy[l])};
+    }
+  }
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

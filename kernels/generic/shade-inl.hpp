@@ -36,22 +36,24 @@ class ShadingVisitor {
   using Mask = xsimd::batch_bool<float, Arch>;
   static constexpr std::size_t kLanes = Floats::size;
   static constexpr std::size_t kParts = kTileSize / kLanes;
-  static constexpr int kPlanes = kColourPlanes;
+  static constexpr int kPlanes = kShadingPlanes;
 
   explicit ShadingVisitor(const detail::ShadeBatch& batch)
       : batch_(batch),
         interpolator_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, 0.0, 0.0),
         divide_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}),
         colour_planes_(Method == InterpolationMethod::plane_equations &&
-                       batch.shading == Shading::gouraud),
+                       (batch.shading == Shading::gouraud || batch.shading == Shading::diffuse)),
+        normal_planes_(colour_planes_ && batch.shading == Shading::diffuse),
         keep_bounds_(batch.tile_max_depth != nullptr && batch.depth_write),
         reject_hidden_(
             batch.tile_max_depth != nullptr && batch.hierarchical_depth &&
             (batch.depth_test == DepthTest::less || batch.depth_test == DepthTest::less_equal)),
         textured_(batch.texture_description != nullptr),
         // Model no more than the scene needs: Gouraud colour by plane equations interpolates the
-        // colours directly, and then, untextured, needs nothing per triangle beyond the planes.
-        needs_vertices_(textured_ || batch.normals != nullptr || !colour_planes_) {}
+        // colours (and diffuse the normals) directly, and then, untextured, needs nothing per
+        // triangle beyond the planes.
+        needs_vertices_(textured_ || !colour_planes_) {}
 
   // The depth and colour planes of a group of triangles (plane_setup-inl.hpp), before
   // begin_triangle() for each.
@@ -73,9 +75,16 @@ class ShadingVisitor {
           in.colour[i][2][l] = colour.z;
           in.colour[i][3][l] = colour.w;
         }
+        if (normal_planes_) {
+          const Vec3 normal = valid ? batch_.normals[v] : Vec3{};
+          in.normal[i][0][l] = normal.x;
+          in.normal[i][1][l] = normal.y;
+          in.normal[i][2][l] = normal.z;
+        }
       }
     }
-    set_up_plane_group(in, colour_planes_, batch_.perspective == Perspective::correct, group_);
+    set_up_plane_group(in, colour_planes_, normal_planes_,
+                       batch_.perspective == Perspective::correct, group_);
   }
 
   void begin_triangle(std::uint32_t t) {
@@ -85,7 +94,7 @@ class ShadingVisitor {
     max_vertex_depth_ = group_.max_depth[l];
     if (colour_planes_) {
       perspective_ = group_.perspective[l];
-      for (int k = 0; k < kPlanes; ++k)
+      for (int k = 0; k < (normal_planes_ ? kShadingPlanes : kColourPlanes); ++k)
         plane_[k] = group_.colour[k][l];
     }
     if (needs_vertices_) begin_triangle_from_vertices(t);
@@ -122,7 +131,7 @@ class ShadingVisitor {
       usable_w = usable_w && w >= kMinClipW && w <= kMaxClipW;
     perspective_ = batch_.perspective == Perspective::correct && usable_w &&
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
-    if (batch_.normals != nullptr) scale_normals();
+    if (batch_.normals != nullptr && !normal_planes_) scale_normals();
     if (batch_.shading == Shading::flat) flat_color_ = pack_rgba8(color_[0]);
     if (textured_)
       texture_.begin_triangle(detail::make_texture_planes(p, uv, screen.w, batch_.perspective),
@@ -311,20 +320,20 @@ class ShadingVisitor {
                                          Floats& stored_max) {
     if constexpr (Method == InterpolationMethod::plane_equations) {
       if (colour_planes_ && batch_.depth_write) {
-        if (mask == ~std::uint64_t{0}) {
-          if (perspective_) {
-            return shade_planar_rows<Test, true, true, RowTermsPerRow>(
-                mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
+        const auto full = [&](auto divide, auto lit) {
+          if (mask == ~std::uint64_t{0}) {
+            return shade_planar_rows<Test, decltype(divide)::value, true, RowTermsPerRow,
+                                     decltype(lit)::value>(mask, rows, depth, color, py, columns,
+                                                           colour_row_bases, stored_max);
           }
-          return shade_planar_rows<Test, false, true, RowTermsPerRow>(
-              mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
-        }
-        if (perspective_) {
-          return shade_planar_rows<Test, true, false, RowTermsPerRow>(
-              mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
-        }
-        return shade_planar_rows<Test, false, false, RowTermsPerRow>(
-            mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
+          return shade_planar_rows<Test, decltype(divide)::value, false, RowTermsPerRow,
+                                   decltype(lit)::value>(mask, rows, depth, color, py, columns,
+                                                         colour_row_bases, stored_max);
+        };
+        const auto lit = [&](auto divide) {
+          return normal_planes_ ? full(divide, std::true_type{}) : full(divide, std::false_type{});
+        };
+        return perspective_ ? lit(std::true_type{}) : lit(std::false_type{});
       }
     }
     alignas(64) float row_bases[kPlanes][kTileSize];
@@ -336,10 +345,10 @@ class ShadingVisitor {
                              stored_max);
   }
 
-  // shade_rows() for Gouraud colour from planes, depth written: the same operations as the
-  // generic loop, with the choices made once per tile and the counts kept in registers. A full
-  // tile (every sample covered) runs all eight rows without lane masks.
-  template <DepthTest Test, bool Divide, bool Full, bool RowTermsPerRow>
+  // shade_rows() for colour from planes (Gouraud, or diffuse when Lit), depth written: the same
+  // operations as the generic loop, with the choices made once per tile and the counts kept in
+  // registers. A full tile (every sample covered) runs all eight rows without lane masks.
+  template <DepthTest Test, bool Divide, bool Full, bool RowTermsPerRow, bool Lit>
   [[gnu::always_inline]] void shade_planar_rows(std::uint64_t mask, std::uint32_t rows,
                                                 float* depth, std::uint32_t* color, std::int32_t py,
                                                 const ColumnTerms& columns,
@@ -362,7 +371,9 @@ class ShadingVisitor {
         largest = xsimd::max(largest, updated);
         passed += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
         float row_term[kPlanes];
-        for (int k = 0; k < (Divide ? kPlanes : 4); ++k) {
+        for (int k = 0; k < kPlanes; ++k) {
+          if (k == 4 && !Divide) continue;
+          if (k >= kFirstNormalPlane && !Lit) break;
           if constexpr (RowTermsPerRow) {
             // set_up_colour_rows()'s operations for this one row.
             const float dy = (static_cast<float>(py + row) + 0.5f) - depth_.y0;
@@ -378,6 +389,14 @@ class ShadingVisitor {
           const Floats w = Floats(1.0f) / (Floats(row_term[4]) + columns.colour[4][h]);
           for (int k = 0; k < 4; ++k)
             channel[k] = channel[k] * w;
+        }
+        if constexpr (Lit) {
+          Floats normal[kNormalPlanes];
+          for (int k = 0; k < kNormalPlanes; ++k) {
+            normal[k] =
+                Floats(row_term[kFirstNormalPlane + k]) + columns.colour[kFirstNormalPlane + k][h];
+          }
+          apply_light(normal, channel);
         }
         write_colour(color, row, h, write, pack_rgba8_lanes<Arch>(channel));
       }
@@ -516,8 +535,9 @@ class ShadingVisitor {
     return f(std::integral_constant<DepthTest, DepthTest::never>{});
   }
 
-  // Colour planes in use: the fifth, 1 / w, only for perspective-correct colour.
-  int planes_used() const { return perspective_ ? kPlanes : 4; }
+  // Planes in use: the fifth, 1 / w, only for perspective-correct colour (it is set up, as a
+  // constant, when diffuse shading needs the normal planes after it).
+  int planes_used() const { return normal_planes_ ? kShadingPlanes : perspective_ ? 5 : 4; }
 
   // depth_step() with the test chosen per call.
   [[gnu::always_inline]] Mask depth_step_any_test(float* depth, int row, std::size_t h,
@@ -649,6 +669,28 @@ class ShadingVisitor {
       for (int k = 0; k < 4; ++k)
         channel[k] = channel[k] * w;
     }
+    if (normal_planes_) {
+      Floats normal[kNormalPlanes];
+      for (int k = 0; k < kNormalPlanes; ++k) {
+        normal[k] = Floats(row_bases[kFirstNormalPlane + k][row]) +
+                    columns.colour[kFirstNormalPlane + k][h];
+      }
+      apply_light(normal, channel);
+    }
+  }
+
+  // Diffuse light on R, G and B: ambient + (1 - ambient) max(0, n . l / |n|), the normal `n`
+  // from its planes (any positive multiple of the normal gives the same light).
+  [[gnu::always_inline]] void apply_light(const Floats (&n)[kNormalPlanes], Floats* channel) const {
+    const Floats length = xsimd::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const Floats facing = n[0] * Floats(batch_.light.x) + n[1] * Floats(batch_.light.y) +
+                          n[2] * Floats(batch_.light.z);
+    // A zero normal gives no direct light, not NaN.
+    const Floats lambert = xsimd::select(length > Floats(0.0f),
+                                         xsimd::max(facing / length, Floats(0.0f)), Floats(0.0f));
+    const Floats light = Floats(batch_.ambient) + Floats(1.0f - batch_.ambient) * lambert;
+    for (int k = 0; k < 3; ++k)
+      channel[k] = channel[k] * light;
   }
 
   // Packed RGBA8 of kLanes pixels from (column, row) relative to the interpolation origin.
@@ -693,7 +735,8 @@ class ShadingVisitor {
   ScreenInterpolator<Arch, Method> interpolator_;
   PerspectiveDivide<Arch> divide_;
   // Fixed for the batch.
-  const bool colour_planes_;  // Gouraud colour from the group's planes
+  const bool colour_planes_;  // Gouraud or diffuse colour from the group's planes
+  const bool normal_planes_;  // diffuse: the normal from the group's planes
   const bool keep_bounds_, reject_hidden_;
   const bool textured_;
   const bool needs_vertices_;  // begin_triangle() reads the vertices for more than the planes

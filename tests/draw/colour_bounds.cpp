@@ -180,7 +180,57 @@ double plane_colour_error(const ScreenTriangle& t, const VertexAttributes& attri
 
 int plane_colour_codes(const ScreenTriangle& t, const VertexAttributes& attributes,
                        Perspective perspective, double px, double py) {
-  const double worst = 255.0 * plane_colour_error(t, attributes, perspective, px, py);
+  return plane_shading_codes(t, attributes, perspective, Shading::gouraud, 0.0f, px, py);
+}
+
+// The light's error: the normal planes p_k (of n_k / w when perspective-correct, else of n_k)
+// carry the plane errors E_k of plane_value(); exactly, p = q n with q > 0 the plane of 1 / w, so
+// p / |p| is the reference's n / |n|. A vector off by |E| moves its direction by at most
+// |E| / (|p| - |E|); the dot product, the squared length, the square root and the division add
+// 12 roundings, as in colour_error(). The kernels scale each triangle's normal planes by one
+// factor in double (a relative rounding of 2^-53 per coefficient, within the 2^-50 M the plane
+// bound allows for its double set-up), which changes neither the direction nor, relatively, the
+// errors; it only keeps float32 away from overflow, so a plane beyond float's range here is not
+// one there: the bound is then unbounded, which is safe.
+double plane_shading_error(const ScreenTriangle& t, const VertexAttributes& attributes,
+                           Perspective perspective, Shading shading, float ambient, double px,
+                           double py) {
+  const double colour = plane_colour_error(t, attributes, perspective, px, py);
+  if (shading != Shading::diffuse) return colour;
+  bool usable_w = true;
+  for (double w : t.w)
+    usable_w = usable_w && w >= kMinClipW && w <= kMaxClipW;
+  const bool divide =
+      perspective == Perspective::correct && usable_w && !(t.w[0] == t.w[1] && t.w[1] == t.w[2]);
+  double error_sq = 0.0, length_sq = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    double f[3];
+    for (int i = 0; i < 3; ++i)
+      f[i] = static_cast<double>((&attributes.normals[i].x)[k]) * (divide ? 1.0 / t.w[i] : 1.0);
+    const PlaneValue p = plane_value(t, f, px, py);
+    error_sq += p.error * p.error;
+    length_sq += p.value * p.value;
+  }
+  const double error = std::sqrt(error_sq), length = std::sqrt(length_sq);
+  const double lambert_error =
+      length > 2.0 * error ? error / (length - error) + 12.0 * kFloatUnit : 1.0;
+  // The lit channels: the colour's error (the light is at most 1) plus the light's error times
+  // the colour's magnitude where it exceeds 1, as colour_error() counts them.
+  double brightest = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 3; ++i)
+      brightest = std::max(brightest, std::abs(static_cast<double>((&attributes.colors[i].x)[k])));
+  }
+  const double total = colour + ((1.0 - ambient) * lambert_error + 4.0 * kFloatUnit) *
+                                    std::max(1.0, brightest + colour);
+  return std::isnan(total) ? std::numeric_limits<double>::infinity() : total;
+}
+
+int plane_shading_codes(const ScreenTriangle& t, const VertexAttributes& attributes,
+                        Perspective perspective, Shading shading, float ambient, double px,
+                        double py) {
+  const double worst =
+      255.0 * plane_shading_error(t, attributes, perspective, shading, ambient, px, py);
   // The reference's own double error is below 2^-40 of a code here.
   if (!std::isfinite(worst) || worst > 254.0) return 255;
   return 1 + static_cast<int>(std::ceil(worst));

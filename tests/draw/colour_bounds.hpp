@@ -56,4 +56,14 @@ int plane_colour_codes(const ScreenTriangle& triangle, const VertexAttributes& a
 double plane_colour_error(const ScreenTriangle& triangle, const VertexAttributes& attributes,
                           Perspective perspective, double px, double py);
 
+// Diffuse by plane equations (the kernels' path for that method and model): the colour planes
+// above, lit by normals that are planes of their own (of n / w, perspective-correct), never
+// divided. As plane_colour_codes() and plane_colour_error() for `shading` Gouraud or diffuse.
+int plane_shading_codes(const ScreenTriangle& triangle, const VertexAttributes& attributes,
+                        Perspective perspective, Shading shading, float ambient, double px,
+                        double py);
+double plane_shading_error(const ScreenTriangle& triangle, const VertexAttributes& attributes,
+                           Perspective perspective, Shading shading, float ambient, double px,
+                           double py);
+
 }  // namespace edgewise::test

@@ -78,11 +78,11 @@ TEST_P(Render, ColoursWithinTheDerivedBound) {
             for (std::int32_t x = 0; x < width; ++x) {
               const std::size_t p = static_cast<std::size_t>(y) * width + x;
               if (expected.depth[p] == 1.0f && actual.depth[p] == 1.0f) continue;  // not drawn
-              const bool planes = method == InterpolationMethod::plane_equations &&
-                                  shading == Shading::gouraud;  // the colour-plane path
+              // The plane path: colour (and diffuse's normals) from planes.
+              const bool planes = method == InterpolationMethod::plane_equations;
               const int allowed =
-                  planes ? plane_colour_codes(tri, attributes_of(one, 0), perspective, x + 0.5,
-                                              y + 0.5)
+                  planes ? plane_shading_codes(tri, attributes_of(one, 0), perspective, shading,
+                                               options.ambient, x + 0.5, y + 0.5)
                          : allowed_codes(attributes_of(one, 0),
                                          weight_errors(method, perspective, tri, x + 0.5, y + 0.5),
                                          shading, options.ambient);

@@ -61,8 +61,8 @@ double colour_error_at(const Case& c, const Scene& one, const ScreenTriangle& tr
     return colour_error(attributes, one_hot_weight_errors(0, Perspective::affine, tri),
                         Shading::gouraud, options.ambient);
   }
-  if (c.shading == Shading::gouraud && c.method == InterpolationMethod::plane_equations) {
-    return plane_colour_error(tri, attributes, c.perspective, px, py);
+  if (c.method == InterpolationMethod::plane_equations) {
+    return plane_shading_error(tri, attributes, c.perspective, c.shading, options.ambient, px, py);
   }
   return colour_error(attributes, weight_errors(c.method, c.perspective, tri, px, py), c.shading,
                       options.ambient);

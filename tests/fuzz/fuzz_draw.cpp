@@ -867,11 +867,12 @@ std::optional<ColourBound> colour_bound_for(const Case& c, const Piece& piece, s
       }
     }
     e = test::one_hot_weight_errors(chosen, o.perspective, t);
-  } else if (o.interpolation == InterpolationMethod::plane_equations &&
-             o.shading == Shading::gouraud) {
-    // Gouraud colour by plane equations: the kernels' colour-plane path.
-    return ColourBound{test::plane_colour_codes(t, piece.attributes, o.perspective, px, py),
-                       test::plane_colour_error(t, piece.attributes, o.perspective, px, py)};
+  } else if (o.interpolation == InterpolationMethod::plane_equations) {
+    // Gouraud or diffuse by plane equations: the kernels' plane path.
+    return ColourBound{
+        test::plane_shading_codes(t, piece.attributes, o.perspective, o.shading, o.ambient, px, py),
+        test::plane_shading_error(t, piece.attributes, o.perspective, o.shading, o.ambient, px,
+                                  py)};
   } else {
     e = test::weight_errors(o.interpolation, o.perspective, t, px, py);
   }
