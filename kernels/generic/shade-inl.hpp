@@ -58,7 +58,6 @@ class ShadingVisitor {
   // The depth and colour planes of a group of triangles (plane_setup-inl.hpp), before
   // begin_triangle() for each.
   void begin_group(const GroupCorners<Arch>& corners, const TriangleGroup<Arch>& positions) {
-    group_first_ = corners.first;
     PlaneGroupInput<Arch> in;
     for (std::size_t l = 0; l < kSetupLanes<Arch>; ++l) {
       for (int i = 0; i < 3; ++i) {
@@ -87,15 +86,19 @@ class ShadingVisitor {
                        batch_.perspective == Perspective::correct, group_);
   }
 
-  void begin_triangle(std::uint32_t t) {
-    const std::size_t l = t - group_first_;
+  // Triangle t, lane l of the last begin_group().
+  void begin_triangle(std::uint32_t t, std::size_t l) {
     row_bases_tile_y_ = kNoTileRow;
     depth_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
     max_vertex_depth_ = group_.max_depth[l];
     if (colour_planes_) {
       perspective_ = group_.perspective[l];
-      for (int k = 0; k < (normal_planes_ ? kShadingPlanes : kColourPlanes); ++k)
+      for (int k = 0; k < kColourPlanes; ++k)
         plane_[k] = group_.colour[k][l];
+      if (normal_planes_) {
+        for (int k = kFirstNormalPlane; k < kShadingPlanes; ++k)
+          plane_[k] = group_.colour[k][l];
+      }
     }
     if (needs_vertices_) begin_triangle_from_vertices(t);
   }
@@ -320,20 +323,12 @@ class ShadingVisitor {
                                          Floats& stored_max) {
     if constexpr (Method == InterpolationMethod::plane_equations) {
       if (colour_planes_ && batch_.depth_write) {
-        const auto full = [&](auto divide, auto lit) {
-          if (mask == ~std::uint64_t{0}) {
-            return shade_planar_rows<Test, decltype(divide)::value, true, RowTermsPerRow,
-                                     decltype(lit)::value>(mask, rows, depth, color, py, columns,
-                                                           colour_row_bases, stored_max);
-          }
-          return shade_planar_rows<Test, decltype(divide)::value, false, RowTermsPerRow,
-                                   decltype(lit)::value>(mask, rows, depth, color, py, columns,
-                                                         colour_row_bases, stored_max);
-        };
-        const auto lit = [&](auto divide) {
-          return normal_planes_ ? full(divide, std::true_type{}) : full(divide, std::false_type{});
-        };
-        return perspective_ ? lit(std::true_type{}) : lit(std::false_type{});
+        if (normal_planes_) {
+          return shade_planar_choice<Test, RowTermsPerRow, true>(
+              mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
+        }
+        return shade_planar_choice<Test, RowTermsPerRow, false>(
+            mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
       }
     }
     alignas(64) float row_bases[kPlanes][kTileSize];
@@ -343,6 +338,29 @@ class ShadingVisitor {
     }
     shade_rows_generic<Test>(mask, rows, depth, color, px, py, columns, colour_row_bases,
                              stored_max);
+  }
+
+  // shade_planar_rows() for the tile's division (perspective) and coverage (full or not).
+  template <DepthTest Test, bool RowTermsPerRow, bool Lit>
+  [[gnu::always_inline]] void shade_planar_choice(std::uint64_t mask, std::uint32_t rows,
+                                                  float* depth, std::uint32_t* color,
+                                                  std::int32_t py, const ColumnTerms& columns,
+                                                  const float (*colour_row_bases)[kTileSize],
+                                                  Floats& stored_max) {
+    if (mask == ~std::uint64_t{0}) {
+      if (perspective_) {
+        return shade_planar_rows<Test, true, true, RowTermsPerRow, Lit>(
+            mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
+      }
+      return shade_planar_rows<Test, false, true, RowTermsPerRow, Lit>(
+          mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
+    }
+    if (perspective_) {
+      return shade_planar_rows<Test, true, false, RowTermsPerRow, Lit>(
+          mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
+    }
+    return shade_planar_rows<Test, false, false, RowTermsPerRow, Lit>(
+        mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
   }
 
   // shade_rows() for colour from planes (Gouraud, or diffuse when Lit), depth written: the same
@@ -741,7 +759,6 @@ class ShadingVisitor {
   const bool textured_;
   const bool needs_vertices_;  // begin_triangle() reads the vertices for more than the planes
   // The current group's planes and triangle.
-  std::size_t group_first_ = 0;
   PlaneGroup<Arch> group_{};
   detail::DepthPlane depth_{};
   float max_vertex_depth_ = 0.0f;

@@ -1,6 +1,6 @@
 // The triangle loop every coverage and drawing kernel shares: fetch, set up and walk every
 // triangle of a batch, a group of setup lanes at a time, delivering its tiles to an inlined
-// visitor (begin_triangle, tile, full_tiles).
+// visitor (begin_group and begin_triangle(t, lane), or begin_triangle(t); tile, full_tiles).
 #pragma once
 
 #include <cstddef>
@@ -25,6 +25,70 @@ inline bool prefers_span_walk(const PixelRect& box) {
   return std::int64_t{box.x1 - box.x0} * (box.y1 - box.y0) >= kSpanWalkMinBoxArea;
 }
 
+// The walk a drawn, visible triangle takes. The block walks are chosen by the unclipped box
+// (setup.extent), which holds the clipped one: a triangle takes the same walk whichever bin it is
+// drawn in.
+template <class Visitor>
+inline void walk_triangle(const TriangleSetup& setup, Visitor& visitor) {
+  if (setup.narrow && setup.extent <= kTileSize) {
+    walk_block<Arch>(setup, visitor);
+  } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
+    walk_block_16<Arch>(setup, visitor);
+  } else if (prefers_span_walk(setup.box) && span_walk_is_exact(setup)) {
+    walk_spans<Arch>(setup, visitor);
+  } else if (setup.narrow) {
+    walk_tiles<Arch, std::int32_t>(setup, visitor);
+  } else {
+    walk_tiles<Arch, std::int64_t>(setup, visitor);
+  }
+}
+
+// Visible triangles gathered into whole groups for a visitor that sets up per-triangle state a
+// group at a time (begin_group): culled, empty and clipped-away triangles (half of a closed
+// mesh's, its back faces) then cost that set-up nothing.
+template <class A>
+struct VisibleGroup {
+  static constexpr std::size_t kLanes = kSetupLanes<A>;
+  TriangleGroup<A> positions;
+  GroupCorners<A> corners;
+  TriangleSetup setups[kLanes];
+  std::uint32_t triangles[kLanes];
+  std::size_t count = 0;
+
+  void add(std::uint32_t t, const TriangleGroup<A>& from_positions,
+           const GroupCorners<A>& from_corners, std::size_t lane, const TriangleSetup& setup) {
+    for (int i = 0; i < 3; ++i) {
+      positions.x[i][count] = from_positions.x[i][lane];
+      positions.y[i][count] = from_positions.y[i][lane];
+      corners.vertex[count][i] = from_corners.vertex[lane][i];
+    }
+    corners.valid[count] = true;
+    setups[count] = setup;
+    triangles[count] = t;
+    ++count;
+  }
+
+  // begin_group() on the gathered lanes (the others marked invalid: they read no vertex), then
+  // each triangle's begin_triangle() and walk, in submission order.
+  template <class Visitor>
+  void draw(Visitor& visitor) {
+    if (count == 0) return;
+    for (std::size_t l = count; l < kLanes; ++l) {
+      corners.valid[l] = false;
+      for (int i = 0; i < 3; ++i) {
+        positions.x[i][l] = 0.0f;
+        positions.y[i][l] = 0.0f;
+      }
+    }
+    visitor.begin_group(corners, positions);
+    for (std::size_t l = 0; l < count; ++l) {
+      visitor.begin_triangle(triangles[l], l);
+      walk_triangle(setups[l], visitor);
+    }
+    count = 0;
+  }
+};
+
 // Fetches, sets up and walks every triangle of the batch, a group of setup lanes at a time.
 // The walks (walk_block, walk_spans, walk_tiles) are kept out of line: with one visitor per
 // translation unit the compiler inlined them into this loop, which ran the coverage benchmark's
@@ -32,16 +96,20 @@ inline bool prefers_span_walk(const PixelRect& box) {
 template <class Visitor>
 void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterReport& report) {
   constexpr std::size_t kLanes = kSetupLanes<Arch>;
+  constexpr bool kGrouped = requires(GroupCorners<Arch> c, TriangleGroup<Arch> g) {
+    visitor.begin_group(c, g);
+  };
   report.triangles += batch.triangle_count;
   TriangleGroup<Arch> group;
   GroupCorners<Arch> corners;
   TriangleSetup setups[kLanes];
   TriangleStatus statuses[kLanes];
   bool visible[kLanes];
+  VisibleGroup<Arch> gathered;
   for (std::size_t first = 0; first < batch.triangle_count; first += kLanes) {
     const std::size_t count =
         batch.triangle_count - first < kLanes ? batch.triangle_count - first : kLanes;
-    corners.first = first;
+    bool all_valid = count == kLanes;
     for (std::size_t l = 0; l < kLanes; ++l) {
       // Lanes past the end repeat the last triangle; their results are ignored.
       const std::size_t t = first + (l < count ? l : count - 1);
@@ -56,45 +124,47 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
           v = batch.vertices[corner[i]];
         } else {
           corners.valid[l] = false;
+          all_valid = false;
         }
         group.x[i][l] = v.x;
         group.y[i][l] = v.y;
       }
     }
-    setup_triangles<Arch>(group, batch.clip, batch.cull, setups, statuses, visible);
-    // Visitors that set up per-triangle state for a whole group do it here.
-    if constexpr (requires { visitor.begin_group(corners, group); }) {
-      visitor.begin_group(corners, group);
+    const std::uint32_t visible_lanes =
+        setup_triangles<Arch>(group, batch.clip, batch.cull, setups, statuses, visible);
+    // A whole group of visible triangles with none waiting is set up where it is: gathering
+    // pays only where some lanes drop out.
+    bool in_place = false;
+    if constexpr (kGrouped) {
+      in_place = gathered.count == 0 && all_valid && visible_lanes == (1u << kLanes) - 1;
+      if (in_place) visitor.begin_group(corners, group);
     }
     for (std::size_t l = 0; l < count; ++l) {
       const std::size_t t = first + l;
       const TriangleStatus status =
           corners.valid[l] ? statuses[l] : TriangleStatus::error_bad_index;
       if (batch.statuses != nullptr) batch.statuses[t] = status;
-      if (status == TriangleStatus::drawn) {
-        ++report.drawn;
-        if (!visible[l]) continue;
-        visitor.begin_triangle(static_cast<std::uint32_t>(t));
-        const TriangleSetup& setup = setups[l];
-        const PixelRect& box = setup.box;
-        // The block walks are chosen by the unclipped box (setup.extent), which holds the
-        // clipped one: a triangle takes the same walk whichever bin it is drawn in.
-        if (setup.narrow && setup.extent <= kTileSize) {
-          walk_block<Arch>(setup, visitor);
-        } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
-          walk_block_16<Arch>(setup, visitor);
-        } else if (prefers_span_walk(box) && span_walk_is_exact(setup)) {
-          walk_spans<Arch>(setup, visitor);
-        } else if (setup.narrow) {
-          walk_tiles<Arch, std::int32_t>(setup, visitor);
+      if (status != TriangleStatus::drawn) {
+        detail::count_not_drawn(report, t, status);
+        continue;
+      }
+      ++report.drawn;
+      if (!visible[l]) continue;
+      if constexpr (kGrouped) {
+        if (in_place) {
+          visitor.begin_triangle(static_cast<std::uint32_t>(t), l);
+          walk_triangle(setups[l], visitor);
         } else {
-          walk_tiles<Arch, std::int64_t>(setup, visitor);
+          gathered.add(static_cast<std::uint32_t>(t), group, corners, l, setups[l]);
+          if (gathered.count == kLanes) gathered.draw(visitor);
         }
       } else {
-        detail::count_not_drawn(report, t, status);
+        visitor.begin_triangle(static_cast<std::uint32_t>(t));
+        walk_triangle(setups[l], visitor);
       }
     }
   }
+  if constexpr (kGrouped) gathered.draw(visitor);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

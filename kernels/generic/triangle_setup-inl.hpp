@@ -78,7 +78,6 @@ struct TriangleGroup {
 // The vertices of a group's triangles, lane by lane: valid when all three indices are in range.
 template <class Arch>
 struct GroupCorners {
-  std::size_t first;  // the triangle of lane 0
   std::size_t vertex[kSetupLanes<Arch>][3];
   bool valid[kSetupLanes<Arch>];
 };
@@ -87,10 +86,12 @@ struct GroupCorners {
 // at most 51 bits, so double lanes hold it exactly and every sum, difference and product below
 // is exact (products of two 25-bit values, sums of at most three 50-bit values); division by
 // 256 or 8 is exact, and floor() of an exact quotient is exact. Writes each lane's status and,
-// for drawn triangles, `visible` (the clipped box is not empty) and `setups`.
+// for drawn triangles, `visible` (the clipped box is not empty) and `setups`. Returns the lanes
+// that are drawn and visible, bit l for lane l.
 template <class Arch>
-inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip, CullMode cull,
-                            TriangleSetup* setups, TriangleStatus* statuses, bool* visible) {
+inline std::uint32_t setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip,
+                                     CullMode cull, TriangleSetup* setups, TriangleStatus* statuses,
+                                     bool* visible) {
   using D = xsimd::batch<double, Arch>;
   static constexpr std::size_t kLanes = kSetupLanes<Arch>;  // static: lambdas may use it
   const auto load = [](const float* v) {
@@ -187,6 +188,7 @@ inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip
   xsimd::select(nonempty, one, zero).store_aligned(flags[3]);
   xsimd::select(narrow, one, zero).store_aligned(flags[4]);
 
+  std::uint32_t visible_lanes = 0;
   for (std::size_t l = 0; l < kLanes; ++l) {
     if (flags[0][l] == 0.0) {
       statuses[l] =
@@ -200,6 +202,7 @@ inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip
     }
     visible[l] = statuses[l] == TriangleStatus::drawn && flags[3][l] != 0.0;
     if (!visible[l]) continue;
+    visible_lanes |= 1u << l;
     TriangleSetup& setup = setups[l];
     for (int e = 0; e < 3; ++e) {
       setup.edge[e] = {static_cast<std::int32_t>(a[e][l]), static_cast<std::int32_t>(b[e][l]),
@@ -212,6 +215,7 @@ inline void setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip
     setup.extent = static_cast<std::int32_t>(extents[l]);
     setup.narrow = flags[4][l] != 0.0;
   }
+  return visible_lanes;
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE
