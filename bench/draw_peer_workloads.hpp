@@ -1,7 +1,8 @@
 // The workloads DrawPeer/ measures: the draw() calls that Shading/ and TexturedDraw/ time, by
 // name, for a peer renderer to draw from the same vertex arrays with the same settings:
 // - area:<px>: Shading/<isa>/area:<px> (shading_scene.hpp);
-// - ground_plane/trilinear: TexturedDraw/<isa>/trilinear/quad (bench_texture.hpp).
+// - ground_plane/trilinear: TexturedDraw/<isa>/trilinear/quad (bench_texture.hpp);
+// - ground_plane/anisotropic16: TexturedDraw/<isa>/anisotropic/quad, max_anisotropy 16.
 #pragma once
 
 #include <cstdint>
