@@ -1,7 +1,8 @@
 // DrawPeer/llvmpipe/<threads>/<workload>/manual_time: Mesa's llvmpipe drawing the same work as
 // Shading/<isa>/area:<px> (workload area:<px>), TexturedDraw/<isa>/trilinear/quad (workload
-// ground_plane/trilinear) and MeshDraw/<isa>/<mesh> (workload mesh/<mesh>): draw_peer_workloads.hpp
-// names the draw() calls, llvmpipe_peer.hpp says how OpenGL reproduces them.
+// ground_plane/trilinear), TexturedDraw/<isa>/anisotropic/quad (ground_plane/anisotropic16) and
+// MeshDraw/<isa>/<mesh> (workload mesh/<mesh>): draw_peer_workloads.hpp names the draw() calls,
+// llvmpipe_peer.hpp says how OpenGL reproduces them.
 //
 // Threads: threads:1 runs llvmpipe with LP_NUM_THREADS=0, which makes it rasterize on the thread
 // that draws (no rasterizer threads: one thread does everything, as in edgewise's benchmarks);

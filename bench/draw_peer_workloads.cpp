@@ -23,6 +23,7 @@ constexpr std::string_view kFixedNames[] = {
     "area:200000",
 #if defined(EDGEWISE_BENCH_SAMPLING)
     "ground_plane/trilinear",
+    "ground_plane/anisotropic16",
 #endif
 };
 
@@ -41,10 +42,12 @@ std::unique_ptr<PeerWorkload> build(std::string_view name) {
     return w;
   }
 #if defined(EDGEWISE_BENCH_SAMPLING)
-  if (name == "ground_plane/trilinear") {
+  if (name == "ground_plane/trilinear" || name == "ground_plane/anisotropic16") {
+    const TextureFilter filter =
+        name == "ground_plane/trilinear" ? TextureFilter::trilinear : TextureFilter::anisotropic;
     w->mesh = ground_plane_mesh().mesh();
-    w->options =
-        ground_plane_options(active_isa(), TextureFilter::trilinear, TextureDerivatives::quad);
+    w->options = ground_plane_options(active_isa(), filter, TextureDerivatives::quad);
+    w->options.texture->sampler.max_anisotropy = 16;
     w->clear_color = kGroundPlaneClearColor;
     w->clear_depth = kGroundPlaneClearDepth;
     w->triangles = w->mesh.positions.size() / 3;

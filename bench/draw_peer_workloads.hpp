@@ -2,6 +2,7 @@
 // name, for a peer renderer to draw from the same vertex arrays with the same settings:
 // - area:<px>: Shading/<isa>/area:<px> (shading_scene.hpp);
 // - ground_plane/trilinear: TexturedDraw/<isa>/trilinear/quad (bench_texture.hpp);
+// - ground_plane/anisotropic16: TexturedDraw/<isa>/anisotropic/quad, max_anisotropy 16;
 // - mesh/<name>: MeshDraw/<isa>/<name>, a real mesh (mesh_scenes.hpp), when built with the OBJ
 //   loader and EDGEWISE_BENCH_MESHES names a folder of OBJ files.
 #pragma once

@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "benchmarks.hpp"
@@ -184,10 +185,13 @@ std::string unsupported(const PeerWorkload& workload) {
   if (o.shading != Shading::flat || !mesh.colors.empty()) return "textures on shaded colours";
   if (texture.format() != TexelFormat::rgba8 || texture.encoding() != ColorEncoding::linear)
     return "textures other than linear RGBA8";
-  if (sampler.filter != TextureFilter::trilinear || sampler.wrap_s != WrapMode::repeat ||
-      sampler.wrap_t != WrapMode::repeat || sampler.lod != LodFormula::exact ||
-      sampler.lod_bias != 0.0f || o.texture->derivatives != TextureDerivatives::quad) {
-    return "sampling other than trilinear, repeat, without bias, with quad derivatives";
+  if ((sampler.filter != TextureFilter::trilinear &&
+       sampler.filter != TextureFilter::anisotropic) ||
+      sampler.wrap_s != WrapMode::repeat || sampler.wrap_t != WrapMode::repeat ||
+      sampler.lod != LodFormula::exact || sampler.lod_bias != 0.0f ||
+      o.texture->derivatives != TextureDerivatives::quad) {
+    return "sampling other than trilinear or anisotropic, repeat, without bias, with quad "
+           "derivatives";
   }
   return {};
 }
@@ -402,6 +406,21 @@ bool LlvmpipePeer::load(const PeerWorkload& workload, std::string& error) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    const SamplerOptions& sampler = options.texture->sampler;
+    if (sampler.filter == TextureFilter::anisotropic) {
+      // GL_ARB_texture_filter_anisotropic: up to GL_TEXTURE_MAX_ANISOTROPY samples along the
+      // footprint's major axis, as edgewise's anisotropic filter takes max_anisotropy probes.
+      GLfloat most = 0.0f;
+      glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &most);
+      if (!has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
+          most < GLfloat(sampler.max_anisotropy)) {
+        error = renderer_ + " has no anisotropic filtering up to " +
+                std::to_string(sampler.max_anisotropy) + " samples (largest " +
+                std::to_string(most) + ")";
+        return false;
+      }
+      glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, GLfloat(sampler.max_anisotropy));
+    }
     glUniform1i(glGetUniformLocation(c.program, "image"), 0);
   }
 

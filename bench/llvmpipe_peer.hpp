@@ -16,7 +16,11 @@
 //   normal, as Shading::diffuse; indexed meshes through an element buffer; back faces culled
 //   (edgewise's windings are on its y-down screen, GL's opposite after the flip);
 // - textured (flat white shading times the texture): the texture's own mip levels, filtered with
-//   GL_LINEAR_MIPMAP_LINEAR and GL_REPEAT, as edgewise's trilinear filter.
+//   GL_LINEAR_MIPMAP_LINEAR and GL_REPEAT, as edgewise's trilinear filter; for edgewise's
+//   anisotropic filter, with GL_TEXTURE_MAX_ANISOTROPY set to its max_anisotropy as well
+//   (GL_ARB_texture_filter_anisotropic, which llvmpipe offers up to 16 in Mesa 22.3). GL leaves
+//   the anisotropic filter's form to the driver: the two do the same kind of work (up to that
+//   many probes along the footprint's major axis), not the same arithmetic.
 // load() refuses other settings.
 //
 // llvmpipe reads its settings (LP_NUM_THREADS among them) from the environment when EGL creates

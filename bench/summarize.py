@@ -13,8 +13,9 @@ the scalar reference, and the comparison with published peer figures and with th
   OpenImageIO's TextureSystem, against the sampling targets (AVX2, one core, ground plane);
 - TexturedDraw/*: textured pixels/s of draw() on the same ground-plane view per filter, ISA and
   derivative method, beside sample()'s rate on the view's queries;
-- DrawPeer/*: Mesa's llvmpipe on the Shading/ workloads and the trilinear TexturedDraw/ one, one
-  thread and its default threads, beside edgewise (the widest ISA measured): edgewise / llvmpipe;
+- DrawPeer/*: Mesa's llvmpipe on the Shading/ workloads and the trilinear and anisotropic
+  (max_anisotropy 16) TexturedDraw/ ones, one thread and its default threads, beside edgewise
+  (the widest ISA measured): edgewise / llvmpipe;
 - MeshDraw/* with DrawPeer/*/mesh/*: real meshes (per-pixel diffuse, back faces culled), edgewise
   against llvmpipe per mesh on one thread and on every core, and the median ratio over the meshes.
 
@@ -75,6 +76,7 @@ DRAW_PEER_WORKLOADS = {
     "area:1000": ("Shading", 1000, "fragments", "frag/s"),
     "area:200000": ("Shading", 200000, "fragments", "frag/s"),
     "ground_plane/trilinear": ("TexturedDraw", "trilinear", "items_per_second", "px/s"),
+    "ground_plane/anisotropic16": ("TexturedDraw", "anisotropic", "items_per_second", "px/s"),
 }
 ISA_ORDER = ["reference", "sse2", "sse4_1", "avx2", "neon"]
 METHOD_ORDER = ["nearest_vertex", "inverse_distance", "subtriangle_areas", "edge_functions",

@@ -13,10 +13,6 @@
 #include "summed_area-inl.hpp"
 #include "texture_filters-inl.hpp"
 
-// For the filter lambdas: inlined into their loops (GCC otherwise calls each once per batch,
-// passing the queries and results through memory).
-#define EDGEWISE_INLINE_LAMBDA __attribute__((always_inline))
-
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 namespace sample_detail {
@@ -96,11 +92,12 @@ struct ChannelResults {
 
   [[gnu::always_inline]] void store(const Rgba<Arch>& rgba, std::size_t first,
                                     std::size_t count) const {
-    for (int k = 0; k < 4; ++k) {
-      if (count == kLanes) {
+    if (count == kLanes) {
+      for (int k = 0; k < 4; ++k)
         rgba.c[k].store_unaligned(channels.c[k] + first);
-        continue;
-      }
+      return;
+    }
+    for (int k = 0; k < 4; ++k) {
       alignas(64) float lanes[kLanes];
       rgba.c[k].store_aligned(lanes);
       for (std::size_t l = 0; l < count; ++l)

@@ -13,7 +13,7 @@
 
 #include "../src/sample_kernels.hpp"
 
-#if defined(__AVX2__)
+#if defined(__SSSE3__)
 #include <immintrin.h>
 #endif
 
@@ -32,13 +32,18 @@ struct LevelLanes {
 };
 
 #define EDGEWISE_INLINE [[gnu::always_inline]] inline
+// For lambdas in loops: inlined (GCC otherwise calls each once per batch, passing the queries
+// and results through memory).
+#define EDGEWISE_INLINE_LAMBDA __attribute__((always_inline))
 
 // base[index] per lane by one load per lane, for texels: on AMD Zen 3 the AVX2 gather
 // instruction is slower than eight loads there (bilinear on the ground-plane stream: 34 M/s with
 // gathers, 78 M/s with loads), while it wins on small, hot tables (the EWA weights: 26 M/s
-// against 18 M/s on the magnification stream), which keep gather_*(). The lanes are built from
-// their values at once (vmovd and vpinsrd on x86), not inserted one by one into the whole
-// register as xsimd's gather does.
+// against 18 M/s on the magnification stream), which keep gather_*(). On AMD Zen 5 too (the
+// trilinear ground plane drawn: 92 M px/s with loads, 77 M px/s with gathers; texel pairs,
+// texel_pairs-inl.hpp: 108 M px/s with 64-bit loads, 86 M px/s with 64-bit gathers, measured
+// in one run each, one core). The lanes are built from their values at once (vmovd and vpinsrd
+// on x86), not inserted one by one into the whole register as xsimd's gather does.
 template <class Arch, class T, std::size_t... Lane>
 EDGEWISE_INLINE xsimd::batch<T, Arch> load_lanes(const T* base, const std::int32_t* at,
                                                  std::index_sequence<Lane...>) {
@@ -197,6 +202,32 @@ EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> wrap_index(xsimd::batch<std::in
   return xsimd::min(xsimd::max(i, zero), n - Ints(1));
 }
 
+// The two texel indices of a bilinear tap row, x0 and x0 + 1, wrapped into [0, n), for x0 the
+// floor of c n - 1/2 with c = reduce_coordinate(): as wrap_index<1>, with fewer operations
+// where the reduction bounds x0. For repeat c is in [0, 1] (s - floor(s) rounds to 1 at most),
+// so c n - 1/2 lies in [-1/2, n - 1/2] (c n is at most n after rounding, n being whole):
+// x0 >= -1 needs only its lower wrap and x0 + 1 <= n only its upper one. Clamping is two
+// comparisons per index whatever x0 is.
+template <class Arch>
+EDGEWISE_INLINE std::pair<xsimd::batch<std::int32_t, Arch>, xsimd::batch<std::int32_t, Arch>>
+wrap_tap_pair(xsimd::batch<std::int32_t, Arch> x0, xsimd::batch<std::int32_t, Arch> n,
+              WrapMode mode) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  const Ints zero(0);
+  const Ints x1 = x0 + Ints(1);
+  switch (mode) {
+    case WrapMode::repeat:
+      return {xsimd::select(x0 < zero, x0 + n, x0), xsimd::select(x1 == n, zero, x1)};
+    case WrapMode::clamp_to_edge: {
+      const Ints last = n - Ints(1);
+      return {xsimd::min(xsimd::max(x0, zero), last), xsimd::min(xsimd::max(x1, zero), last)};
+    }
+    case WrapMode::mirror:
+      break;
+  }
+  return {wrap_index<Arch, 1>(x0, n, mode), wrap_index<Arch, 1>(x1, n, mode)};
+}
+
 // Any texel index below 2^24 in magnitude wrapped into [0, n): the quotient by one period comes
 // from a float division (exact but for a rounding that can only land it one period off, which
 // the two corrections undo).
@@ -215,6 +246,43 @@ EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> wrap_any_index(xsimd::batch<std
   return xsimd::select(r >= n, period - Ints(1) - r, r);
 }
 
+#if defined(__SSSE3__)
+// The byte shuffle (pshufb) that moves byte k of each 32-bit lane of a 128-bit block to the
+// lane's lowest byte and zeroes the others (index bit 7 set).
+EDGEWISE_INLINE __m128i byte_k_of_lanes(int k) {
+  const auto lane = [k](int j) { return static_cast<std::int32_t>(0x80808000u + 4 * j + k); };
+  return _mm_setr_epi32(lane(0), lane(1), lane(2), lane(3));
+}
+#endif
+
+// Channel k of 8-bit RGBA texels (one per lane), in the texture's stored units.
+template <class Arch>
+EDGEWISE_INLINE xsimd::batch<float, Arch> decode_channel(const detail::TextureDescription& texture,
+                                                         xsimd::batch<std::int32_t, Arch> packed,
+                                                         int k) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  Ints code;
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Ints::size == 8) {
+    const __m128i select_byte = byte_k_of_lanes(k);
+    code = _mm256_shuffle_epi8(packed, _mm256_broadcastsi128_si256(select_byte));
+  } else
+#endif
+#if defined(__SSSE3__)
+      if constexpr (std::is_base_of_v<xsimd::ssse3, Arch> && Ints::size == 4) {
+    code = _mm_shuffle_epi8(packed, byte_k_of_lanes(k));
+  } else
+#endif
+  {
+    // Logical shift (as unsigned), masked below the top byte.
+    using Uints = xsimd::batch<std::uint32_t, Arch>;
+    const Uints bits = xsimd::bitwise_cast<Uints>(packed);
+    code = xsimd::bitwise_cast<Ints>(k == 3 ? bits >> 24 : (bits >> (8 * k)) & Uints(0xFF));
+  }
+  if (k < 3 && texture.srgb_table != nullptr) return gather_float<Arch>(texture.srgb_table, code);
+  return xsimd::to_float(code);
+}
+
 // RGBA of the texels at storage indices `index` (a level's start + y * width + x), in the
 // texture's stored units: the linear value times 1 / channel_scale (8-bit codes stay 0 .. 255, so
 // filters weight them as they are and one multiply per result, not per texel, brings them to
@@ -229,14 +297,8 @@ EDGEWISE_INLINE Rgba<Arch> fetch_texels(const detail::TextureDescription& textur
   if (texture.format == TexelFormat::rgba8) {
     const Ints packed =
         load_lanes_int32<Arch>(reinterpret_cast<const std::int32_t*>(texture.texels), index);
-    const Ints byte(0xFF);
-    const Ints codes[4] = {packed & byte, (packed >> 8) & byte, (packed >> 16) & byte,
-                           (packed >> 24) & byte};  // arithmetic shift, masked: the top byte
-    for (int k = 0; k < 4; ++k) {
-      out.c[k] = (k < 3 && texture.srgb_table != nullptr)
-                     ? gather_float<Arch>(texture.srgb_table, codes[k])
-                     : xsimd::to_float(codes[k]);
-    }
+    for (int k = 0; k < 4; ++k)
+      out.c[k] = decode_channel<Arch>(texture, packed, k);
     return out;
   }
   // Float texels: 16 bytes each, addressed in 64 bits (4 * index can pass 2^31).

@@ -18,6 +18,7 @@
 
 #include "fast_log2-inl.hpp"
 #include "texel_fetch-inl.hpp"
+#include "texel_pairs-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
@@ -71,8 +72,15 @@ class TextureFilters {
 
   [[gnu::always_inline]] Rgba<Arch> bilinear(const LevelLanes<Arch>& level, Floats s,
                                              Floats t) const {
-    const Floats u = reduce_coordinate<Arch>(s, options_.wrap_s) * level.widthf - Floats(0.5f);
-    const Floats v = reduce_coordinate<Arch>(t, options_.wrap_t) * level.heightf - Floats(0.5f);
+    const Floats sr = reduce_coordinate<Arch>(s, options_.wrap_s);
+    const Floats tr = reduce_coordinate<Arch>(t, options_.wrap_t);
+    if (texture_.format == TexelFormat::rgba8) {
+      PairSums sums = zero_pair_sums();
+      add_bilinear(sums, level, sr, tr, Floats(1.0f));
+      return total(sums);
+    }
+    const Floats u = sr * level.widthf - Floats(0.5f);
+    const Floats v = tr * level.heightf - Floats(0.5f);
     const Floats u0 = xsimd::floor(u), v0 = xsimd::floor(v);
     const Floats fu = u - u0, fv = v - v0;
     const Ints x0 = xsimd::to_int(u0), y0 = xsimd::to_int(v0);
@@ -146,17 +154,17 @@ class TextureFilters {
   }
 
   [[gnu::always_inline]] Rgba<Arch> trilinear(Floats s, Floats t, Floats lambda) const {
-    const Floats clamped = clamp_lambda(lambda);
-    const Floats floor_level = xsimd::floor(clamped);
-    const Floats f = clamped - floor_level;
-    const Ints l0 = xsimd::to_int(floor_level);
-    const Rgba<Arch> fine = bilinear(level_lanes<Arch>(texture_.mips, l0), s, t);
-    // Where every lane magnifies or sits at the last level, the second level weighs nothing.
-    if (xsimd::all(f == Floats(0.0f))) return fine;
-    const Ints last(texture_.mips.count - 1);
-    const Ints l1 = xsimd::min(l0 + Ints(1), last);
-    return weighted_sum<Arch>(fine, Floats(1.0f) - f,
-                              bilinear(level_lanes<Arch>(texture_.mips, l1), s, t), f);
+    const LevelPair levels = level_pair(lambda);
+    if (texture_.format == TexelFormat::rgba8) {
+      PairSums sums = zero_pair_sums();
+      add_trilinear(sums, levels, reduce_coordinate<Arch>(s, options_.wrap_s),
+                    reduce_coordinate<Arch>(t, options_.wrap_t), Floats(1.0f));
+      return total(sums);
+    }
+    const Rgba<Arch> fine = bilinear(levels.fine, s, t);
+    if (!levels.blends) return fine;
+    return weighted_sum<Arch>(fine, Floats(1.0f) - levels.f, bilinear(levels.coarse, s, t),
+                              levels.f);
   }
 
   Rgba<Arch> supersample(const QueryLanes<Arch>& q) const {
@@ -202,15 +210,24 @@ class TextureFilters {
     float most = 1.0f;
     for (float c : counts)
       most = c > most ? c : most;
-    Rgba<Arch> sum = zero_rgba<Arch>();
     const Floats inverse = Floats(1.0f) / probes;
+    const LevelPair levels = level_pair(lambda);  // every probe's
+    const bool pairs = texture_.format == TexelFormat::rgba8;
+    PairSums pair_sums = zero_pair_sums();
+    Rgba<Arch> sum = zero_rgba<Arch>();
     for (int k = 0; k < static_cast<int>(most); ++k) {
       const Floats kf(static_cast<float>(k));
       const Floats offset = (kf + Floats(0.5f)) * inverse - Floats(0.5f);
       const Floats weight = xsimd::select(kf < probes, inverse, Floats(0.0f));
-      accumulate<Arch>(sum, trilinear(q.s + offset * ds, q.t + offset * dt, lambda), weight);
+      const Floats s = q.s + offset * ds, t = q.t + offset * dt;
+      if (pairs) {
+        add_trilinear(pair_sums, levels, reduce_coordinate<Arch>(s, options_.wrap_s),
+                      reduce_coordinate<Arch>(t, options_.wrap_t), weight);
+      } else {
+        accumulate<Arch>(sum, trilinear(s, t, lambda), weight);
+      }
     }
-    return sum;
+    return pairs ? total(pair_sums) : sum;
   }
 
   Rgba<Arch> ripmap(const QueryLanes<Arch>& q) const {
@@ -299,6 +316,84 @@ class TextureFilters {
   }
 
  private:
+  // Weighted sums of 8-bit texels in the pair layout (texel_pairs-inl.hpp), per channel.
+  struct PairSums {
+    Pairs<float, Arch> c[4];
+  };
+  static PairSums zero_pair_sums() {
+    const Floats zero(0.0f);
+    PairSums sums;
+    for (auto& channel : sums.c)
+      channel = {zero, zero};
+    return sums;
+  }
+  [[gnu::always_inline]] static Rgba<Arch> total(const PairSums& sums) {
+    Rgba<Arch> out;
+    for (int k = 0; k < 4; ++k)
+      out.c[k] = sum_pairs<Arch>(sums.c[k]);
+    return out;
+  }
+
+  // sums += weight * the bilinear filter of `level` at coordinates already reduced by the wrap
+  // modes, for 8-bit texels: each tap row's two texels by one 64-bit load per lane where no lane's
+  // row wraps between them (the usual case: a row wraps at one texel in w), else by a load per
+  // texel; the same sums either way.
+  [[gnu::always_inline]] void add_bilinear(PairSums& sums, const LevelLanes<Arch>& level, Floats sr,
+                                           Floats tr, Floats weight) const {
+    const Floats u = sr * level.widthf - Floats(0.5f);
+    const Floats v = tr * level.heightf - Floats(0.5f);
+    const Floats u0 = xsimd::floor(u), v0 = xsimd::floor(v);
+    const Floats fu = u - u0, fv = v - v0;
+    const Ints x0 = xsimd::to_int(u0), y0 = xsimd::to_int(v0);
+    const auto [xa, xb] = wrap_tap_pair<Arch>(x0, level.width, options_.wrap_s);
+    const auto [ya, yb] = wrap_tap_pair<Arch>(y0, level.height, options_.wrap_t);
+    const Floats gu = Floats(1.0f) - fu;
+    const bool adjacent = xsimd::all(xb == xa + Ints(1));
+    const auto* texels = reinterpret_cast<const std::int32_t*>(texture_.texels);
+    const auto add_row = [&](Ints row, Floats row_weight) EDGEWISE_INLINE_LAMBDA {
+      const Pairs<std::int32_t, Arch> texel =
+          adjacent ? load_texel_pairs<Arch>(texture_.texels, row + xa)
+                   : make_pairs<std::int32_t, Arch>(load_lanes_int32<Arch>(texels, row + xa),
+                                                    load_lanes_int32<Arch>(texels, row + xb));
+      const Pairs<float, Arch> w = make_pairs<float, Arch>(gu * row_weight, fu * row_weight);
+      for (int k = 0; k < 4; ++k) {
+        Pairs<float, Arch>& sum = sums.c[k];
+        sum.low = xsimd::fma(decode_channel<Arch>(texture_, texel.low, k), w.low, sum.low);
+        sum.high = xsimd::fma(decode_channel<Arch>(texture_, texel.high, k), w.high, sum.high);
+      }
+    };
+    add_row(level.start + ya * level.width, (Floats(1.0f) - fv) * weight);
+    add_row(level.start + yb * level.width, fv * weight);
+  }
+
+  // The two levels trilinear filtering blends at lambda, and the coarser one's weight f.
+  struct LevelPair {
+    LevelLanes<Arch> fine, coarse;
+    Floats f;
+    bool blends;  // some lane weighs the coarser level
+  };
+  [[gnu::always_inline]] LevelPair level_pair(Floats lambda) const {
+    const Floats clamped = clamp_lambda(lambda);
+    const Floats floor_level = xsimd::floor(clamped);
+    const Ints l0 = xsimd::to_int(floor_level);
+    LevelPair p;
+    p.f = clamped - floor_level;
+    p.fine = level_lanes<Arch>(texture_.mips, l0);
+    // Where every lane magnifies or sits at the last level, the second level weighs nothing.
+    p.blends = !xsimd::all(p.f == Floats(0.0f));
+    p.coarse = p.blends ? level_lanes<Arch>(texture_.mips,
+                                            xsimd::min(l0 + Ints(1), Ints(texture_.mips.count - 1)))
+                        : p.fine;
+    return p;
+  }
+
+  // sums += weight * the trilinear filter at reduced coordinates, for 8-bit texels.
+  [[gnu::always_inline]] void add_trilinear(PairSums& sums, const LevelPair& levels, Floats sr,
+                                            Floats tr, Floats weight) const {
+    add_bilinear(sums, levels.fine, sr, tr, weight * (Floats(1.0f) - levels.f));
+    if (levels.blends) add_bilinear(sums, levels.coarse, sr, tr, weight * levels.f);
+  }
+
   // The EWA footprint's axes in level-0 texels: major (mu, mv) and minor (nu, nv).
   struct Axes {
     Floats mu, mv, nu, nv;

@@ -236,6 +236,48 @@ TEST_P(SampleDifferential, BadQueriesGiveTheirDefinedResults) {
   }
 }
 
+// 8-bit taps load a tap row's two texels together where no lane of the batch wraps between them,
+// one by one otherwise (docs/DESIGN.md, "Textures"), and both must give the same bits: queries
+// inside the texture with small footprints (levels at least 8 texels wide, where no tap wraps)
+// are sampled, then again with the first query moved to where its tap rows wrap or clamp, which
+// sends its whole batch down the other path. Every other query's result must stay the same.
+TEST_P(SampleDifferential, TexelPairsAndSingleTexelsGiveTheSameBits) {
+  for (ColorEncoding encoding : {ColorEncoding::linear, ColorEncoding::srgb}) {
+    const TestTexture t = make_texture("rgba8 64x48", 64, 48, TexelFormat::rgba8, encoding, 9);
+    for (TextureFilter filter :
+         {TextureFilter::bilinear, TextureFilter::trilinear, TextureFilter::anisotropic}) {
+      for (WrapMode wrap : {WrapMode::repeat, WrapMode::clamp_to_edge, WrapMode::mirror}) {
+        SamplerOptions options;
+        options.filter = filter;
+        options.wrap_s = options.wrap_t = wrap;
+        Random random(static_cast<std::uint64_t>(filter) * 3 + static_cast<std::uint64_t>(wrap));
+        std::vector<TextureQuery> queries(37);
+        for (TextureQuery& q : queries) {
+          q.s = static_cast<float>(random.uniform(0.25, 0.45));
+          q.t = static_cast<float>(random.uniform(0.25, 0.45));
+          // Up to 3 texels of level 0 per pixel: lambda below 2, levels of 16 x 12 texels or more.
+          q.dsdx = static_cast<float>(random.uniform(0.2, 3.0) / 64.0);
+          q.dtdx = static_cast<float>(random.uniform(-0.5, 0.5) / 48.0);
+          q.dsdy = static_cast<float>(random.uniform(-0.5, 0.5) / 64.0);
+          q.dtdy = static_cast<float>(random.uniform(0.2, 3.0) / 48.0);
+        }
+        std::vector<Vec4> together(queries.size()), apart(queries.size());
+        sample(t.texture, {options, isa()}, queries, together);
+        queries[0].s = 0.999f;  // x0 = 63 in level 0: the row wraps (repeat) or clamps
+        sample(t.texture, {options, isa()}, queries, apart);
+        for (std::size_t i = 1; i < queries.size(); ++i) {
+          const float a[4] = {together[i].x, together[i].y, together[i].z, together[i].w};
+          const float b[4] = {apart[i].x, apart[i].y, apart[i].z, apart[i].w};
+          for (int k = 0; k < 4; ++k) {
+            ASSERT_EQ(a[k], b[k]) << name_of(filter) << " " << name_of(wrap) << " query " << i
+                                  << " channel " << k;
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(SampleArguments, RejectsMismatchedSpansAndOptionsOutOfRange) {
   const TestTexture t =
       make_texture("rgba8 4x4", 4, 4, TexelFormat::rgba8, ColorEncoding::linear, 9);
