@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <type_traits>
 
 #include <xsimd/xsimd.hpp>
@@ -68,29 +67,8 @@ inline void store_interleaved(const xsimd::batch<float, Arch> (&channels)[4], fl
 template <class Arch>
 [[gnu::always_inline]] inline void load_interleaved3(const float* in,
                                                      xsimd::batch<float, Arch> (&fields)[3]) {
-#if defined(__AVX512F__)
-  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
-    // Field f of lane l is float 3 l + f of the 48: from the first two registers (indices below
-    // 32), then the lanes beyond from the third.
-    const __m512 a = _mm512_loadu_ps(in), b = _mm512_loadu_ps(in + 16),
-                 c = _mm512_loadu_ps(in + 32);
-    alignas(64) static constexpr std::int32_t kFromAB[3][16] = {
-        {0, 3, 6, 9, 12, 15, 18, 21, 24, 27, 30, 1, 4, 7, 10, 13},
-        {1, 4, 7, 10, 13, 16, 19, 22, 25, 28, 31, 2, 5, 8, 11, 14},
-        {2, 5, 8, 11, 14, 17, 20, 23, 26, 29, 0, 3, 6, 9, 12, 15}};
-    alignas(64) static constexpr std::int32_t kFromC[3][16] = {
-        {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 17, 20, 23, 26, 29},
-        {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 18, 21, 24, 27, 30},
-        {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 16, 19, 22, 25, 28, 31}};
-    for (int f = 0; f < 3; ++f) {
-      const __m512 low = _mm512_permutex2var_ps(a, _mm512_load_si512(kFromAB[f]), b);
-      fields[f] = _mm512_permutex2var_ps(low, _mm512_load_si512(kFromC[f]), c);
-    }
-    return;
-  } else
-#endif
 #if defined(__AVX2__)
-      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
     // Records 0..3 in the low halves, 4..7 in the high halves: the shuffles of the SSE branch
     // below, per half.
     const auto halves = [in](int low) {
@@ -136,17 +114,8 @@ template <class Arch>
 template <class Arch>
 [[gnu::always_inline]] inline void store_interleaved2(xsimd::batch<float, Arch> x,
                                                       xsimd::batch<float, Arch> y, float* out) {
-#if defined(__AVX512F__)
-  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
-    const __m512i low = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
-    const __m512i high = _mm512_add_epi32(low, _mm512_set1_epi32(8));
-    _mm512_storeu_ps(out, _mm512_permutex2var_ps(x, low, y));
-    _mm512_storeu_ps(out + 16, _mm512_permutex2var_ps(x, high, y));
-    return;
-  } else
-#endif
 #if defined(__AVX2__)
-      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
     const __m256 low = _mm256_unpacklo_ps(x, y);   // pairs 0, 1 | 4, 5
     const __m256 high = _mm256_unpackhi_ps(x, y);  // pairs 2, 3 | 6, 7
     _mm256_storeu_ps(out, _mm256_permute2f128_ps(low, high, 0x20));

@@ -127,11 +127,6 @@ inline float lane_max(xsimd::batch<float, Arch> v) {
 template <class Arch>
 [[gnu::always_inline]] inline xsimd::batch<std::int32_t, Arch> mask_lanes(
     xsimd::batch_bool<float, Arch> mask) {
-#if defined(__AVX512DQ__)
-  if constexpr (std::is_base_of_v<xsimd::avx512dq, Arch>) {
-    return _mm512_movm_epi32(mask);  // a mask register on AVX-512
-  } else
-#endif
 #if defined(__AVX2__)
       if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
     return _mm256_castps_si256(mask);

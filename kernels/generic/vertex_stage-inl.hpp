@@ -119,9 +119,8 @@ void store_passing_triangles(const detail::VertexStageCall& call, std::size_t fi
   }
   using Ints = xsimd::batch<std::int32_t, Arch>;
   constexpr std::size_t kLanes = Ints::size;
-  static constexpr std::int32_t kLaneIndex[16] = {0, 1, 2,  3,  4,  5,  6,  7,
-                                                  8, 9, 10, 11, 12, 13, 14, 15};
-  static_assert(kLanes <= 16);
+  static constexpr std::int32_t kLaneIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  static_assert(kLanes <= 8);
   Ints index = Ints::load_unaligned(kLaneIndex) + Ints(static_cast<std::int32_t>(3 * first));
   const Ints step(static_cast<std::int32_t>(kLanes));
   auto* corner = reinterpret_cast<std::int32_t*>(at);

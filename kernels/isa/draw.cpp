@@ -44,7 +44,7 @@ void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* 
 
 void map_to_screen(const detail::VertexStageCall& call, detail::ScreenMesh& out,
                    DrawReport& report) {
-  map_mesh_to_screen<WideArch<Arch>>(call, out, report);
+  map_mesh_to_screen<Arch>(call, out, report);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE
