@@ -128,7 +128,7 @@ template <class Arch>
 [[gnu::always_inline]] inline xsimd::batch<std::int32_t, Arch> mask_lanes(
     xsimd::batch_bool<float, Arch> mask) {
 #if defined(__AVX2__)
-      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
     return _mm256_castps_si256(mask);
   } else
 #endif
