@@ -8,16 +8,24 @@
 # every build has, is not among them). EDGEWISE_ISA_FLAGS_<isa>: that ISA's compiler flags.
 # EDGEWISE_ISAS_OF_OTHER_PROCESSORS: the rest, which the tests check are refused here.
 if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
-  set(EDGEWISE_ISAS sse2 sse4_1 avx2)
+  set(EDGEWISE_ISAS sse2 sse4_1 avx2 avx512)
   # The SSE objects must not contain VEX code (tools/check_isa_objects.sh checks it).
   set(EDGEWISE_ISA_FLAGS_sse2 -msse2 -mno-sse3 -mno-avx)
   set(EDGEWISE_ISA_FLAGS_sse4_1 -msse4.1 -mno-avx)
   set(EDGEWISE_ISA_FLAGS_avx2 -mavx2 -mfma)
+  # AVX-512 F, CD, DQ, BW and VL: the subset of Intel Skylake-SP and later and of AMD Zen 4 and later.
+  set(EDGEWISE_ISA_FLAGS_avx512 -mavx2 -mfma -mavx512f -mavx512cd -mavx512dq -mavx512bw -mavx512vl)
+  # GCC 12's AVX-512 intrinsics (_mm512_min_ps, _mm512_cvtps_epi32, ...) start from a
+  # self-initialized _mm512_undefined_*() value, which -Wuninitialized reports once inlined (GCC
+  # bug 105593, fixed in GCC 13).
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
+    list(APPEND EDGEWISE_ISA_FLAGS_avx512 -Wno-uninitialized -Wno-maybe-uninitialized)
+  endif()
   set(EDGEWISE_ISAS_OF_OTHER_PROCESSORS neon)  # valid names this build must refuse
 elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64)$")
   set(EDGEWISE_ISAS neon)
   set(EDGEWISE_ISA_FLAGS_neon "")  # Advanced SIMD is part of the AArch64 base
-  set(EDGEWISE_ISAS_OF_OTHER_PROCESSORS sse2 sse4_1 avx2)
+  set(EDGEWISE_ISAS_OF_OTHER_PROCESSORS sse2 sse4_1 avx2 avx512)
 else()
   message(FATAL_ERROR "edgewise: unsupported processor ${CMAKE_SYSTEM_PROCESSOR}")
 endif()

@@ -33,7 +33,7 @@ void expect_names_round_trip(int value_count) {
 }
 
 TEST(Names, EveryEnumRoundTrips) {
-  expect_names_round_trip<Isa>(5);
+  expect_names_round_trip<Isa>(6);
   expect_names_round_trip<CullMode>(3);
   expect_names_round_trip<TriangleStatus>(6);
   expect_names_round_trip<ClipStatus>(6);
@@ -54,6 +54,7 @@ TEST(Names, ToolSpellingsStay) {
   // The names the tools' options and output files use.
   EXPECT_EQ(name_of(WrapMode::clamp_to_edge), "clamp");
   EXPECT_EQ(name_of(Isa::sse4_1), "sse4_1");
+  EXPECT_EQ(name_of(Isa::avx512), "avx512");
   EXPECT_EQ(name_of(TextureFilter::bicubic_catmull_rom), "bicubic_catmull_rom");
   EXPECT_EQ(parse_name<WrapMode>("clamp_to_edge"), std::nullopt);
 }

@@ -10,6 +10,7 @@
 #include "../src/isa_kernels.hpp"
 #include "../src/sample_kernels.hpp"
 #include "interleave-inl.hpp"
+#include "lane_arch-inl.hpp"
 #include "summed_area-inl.hpp"
 #include "texture_filters-inl.hpp"
 
@@ -17,7 +18,7 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 namespace sample_detail {
 
-using Arch = EDGEWISE_ARCH;
+using Arch = RowArch<EDGEWISE_ARCH>;
 using Floats = xsimd::batch<float, Arch>;
 using Ints = xsimd::batch<std::int32_t, Arch>;
 constexpr std::size_t kLanes = Floats::size;

@@ -162,13 +162,24 @@ template <class Arch>
   }
 }
 
-// Sign bits of an 8x8 block of int32 values held as rows[row * steps + step], where each row is
-// 8 / lanes batches: bit (row * 8 + column) set when that value is negative. On x86 saturating
-// packs keep each value's sign while narrowing to bytes, so one movemask serves several rows.
+// Sign bits of an 8x8 block of int32 values held in batches in row order (a row is 8 / lanes
+// batches, or a batch 16 lanes / 8 rows): bit (row * 8 + column) set when that value is
+// negative. On x86 saturating packs keep each value's sign while narrowing to bytes, so one
+// movemask serves several rows; AVX-512 compares two rows into one mask register.
 template <class Arch>
 inline std::uint64_t sign_bits_8x8(const xsimd::batch<std::int32_t, Arch>* rows) {
+#if defined(__AVX512F__)
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    std::uint64_t bits = 0;
+    for (int pair = 0; pair < 4; ++pair) {
+      const __mmask16 negative = _mm512_cmplt_epi32_mask(rows[pair], _mm512_setzero_si512());
+      bits |= std::uint64_t{negative} << (16 * pair);
+    }
+    return bits;
+  } else
+#endif
 #if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
     // Packs work within 128-bit halves; the permute restores row order before the movemask.
     const __m256i order = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
     std::uint64_t bits = 0;

@@ -11,29 +11,41 @@
 
 #include <xsimd/xsimd.hpp>
 
+#include "lane_arch-inl.hpp"
 #include "simd_ops-inl.hpp"
 #include "tile_masks-inl.hpp"
 #include "triangle_setup-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
-// Coverage of partial tiles, with the per-triangle lane constants hoisted.
+// Coverage of partial tiles, with the per-triangle lane constants hoisted. A batch holds part of
+// a tile row (4 lanes), one row (8) or several whole rows (16 lanes: rows r and r + 1).
 template <class Arch>
 class TileEvaluator {
  public:
   using Lanes = xsimd::batch<std::int32_t, Arch>;
   static constexpr std::size_t kLanes = Lanes::size;
-  static constexpr std::size_t kStepsPerRow = kTileSize / kLanes;
-  static_assert(kTileSize % kLanes == 0, "a tile row is a whole number of batches");
+  static constexpr std::size_t kStepsPerRow = kLanes < kTileSize ? kTileSize / kLanes : 1;
+  static constexpr std::size_t kRowsPerStep = kLanes > kTileSize ? kLanes / kTileSize : 1;
+  static_assert(kStepsPerRow * kLanes == kRowsPerStep * kTileSize,
+                "a tile row is a whole number of batches, or a batch a whole number of rows");
+  static_assert(kTileSize % kRowsPerStep == 0, "a tile is a whole number of batches");
 
   explicit TileEvaluator(const TriangleSetup& setup) {
-    alignas(64) static constexpr std::int32_t kColumn[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
+    alignas(64) static constexpr std::int32_t kColumn[16] = {0, 1, 2, 3, 4, 5, 6, 7,
+                                                             0, 1, 2, 3, 4, 5, 6, 7};
+    alignas(64) static constexpr std::int32_t kRow[16] = {0, 0, 0, 0, 0, 0, 0, 0,
+                                                          1, 1, 1, 1, 1, 1, 1, 1};
+    static_assert(kStepsPerRow * kLanes <= 16, "the lane tables hold two rows");
     for (int e = 0; e < 3; ++e) {
       const Lanes a(setup.edge[e].a);
       for (std::size_t h = 0; h < kStepsPerRow; ++h) {
         column_offset_[e][h] = a * Lanes::load_aligned(kColumn + h * kLanes);
+        if constexpr (kRowsPerStep > 1) {
+          column_offset_[e][h] += Lanes(setup.edge[e].b) * Lanes::load_aligned(kRow + h * kLanes);
+        }
       }
-      row_step_[e] = Lanes(setup.edge[e].b);
+      row_step_[e] = Lanes(setup.edge[e].b * static_cast<std::int32_t>(kRowsPerStep));
     }
   }
 
@@ -48,10 +60,11 @@ class TileEvaluator {
       v1[h] = g1 + column_offset_[1][h];
       v2[h] = g2 + column_offset_[2][h];
     }
-    Lanes any_outside[kTileSize * kStepsPerRow];  // negative where some edge excludes the sample
-    for (int row = 0; row < kTileSize; ++row) {
+    constexpr std::size_t kSteps = kTileSize / kRowsPerStep;
+    Lanes any_outside[kSteps * kStepsPerRow];  // negative where some edge excludes the sample
+    for (std::size_t step = 0; step < kSteps; ++step) {
       for (std::size_t h = 0; h < kStepsPerRow; ++h) {
-        any_outside[row * kStepsPerRow + h] = v0[h] | v1[h] | v2[h];
+        any_outside[step * kStepsPerRow + h] = v0[h] | v1[h] | v2[h];
         v0[h] += row_step_[0];
         v1[h] += row_step_[1];
         v2[h] += row_step_[2];
@@ -242,7 +255,7 @@ class TileRowWalker {
   const TriangleSetup& setup_;
   const PixelRect& box_;
   Visitor& visitor_;
-  const TileEvaluator<Arch> evaluator_;
+  const TileEvaluator<WideArch<Arch>> evaluator_;
   // Tile columns 0 .. columns-1 from origin_x; those in [inner_begin, inner_end) lie wholly
   // inside the box horizontally.
   const std::int32_t columns_, inner_begin_, inner_end_;
@@ -291,7 +304,7 @@ template <std::size_t N, class Visitor>
 // walk (triangle_batch-inl.hpp says why).
 template <class Arch, class Visitor>
 [[gnu::noinline]] void walk_block(const TriangleSetup& setup, Visitor& visitor) {
-  const TileEvaluator<Arch> evaluator(setup);
+  const TileEvaluator<WideArch<Arch>> evaluator(setup);
   const PixelRect& box = setup.box;
   const std::int32_t dx = box.x0 - setup.origin_x, dy = box.y0 - setup.origin_y;  // 0 .. 7
   std::int32_t g[3];
@@ -319,7 +332,7 @@ template <class Arch, class Visitor>
 // of the overflow analysis (box corner + 15 < origin + 31). Out of line, as every walk.
 template <class Arch, class Visitor>
 [[gnu::noinline]] void walk_block_16(const TriangleSetup& setup, Visitor& visitor) {
-  const TileEvaluator<Arch> evaluator(setup);
+  const TileEvaluator<WideArch<Arch>> evaluator(setup);
   const PixelRect& box = setup.box;
   const std::int32_t dx = box.x0 - setup.origin_x, dy = box.y0 - setup.origin_y;  // 0 .. 7
   const std::int32_t width = box.x1 - box.x0, height = box.y1 - box.y0;           // 1 .. 16

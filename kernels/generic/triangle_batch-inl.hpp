@@ -8,12 +8,13 @@
 #include <type_traits>
 
 #include "../src/kernel_table.hpp"
+#include "lane_arch-inl.hpp"
 #include "span_walk-inl.hpp"
 #include "tile_walk-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
-using Arch = EDGEWISE_ARCH;
+using Arch = RowArch<EDGEWISE_ARCH>;
 
 // Which walk a triangle takes, measured with the coverage benchmark on AMD Zen 3: the span walk
 // overtakes the per-tile walk once the clipped box holds roughly 500 pixels (triangles of about

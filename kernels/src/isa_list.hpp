@@ -6,17 +6,23 @@
 #include "edgewise/isa.hpp"
 
 // Every value of the Isa enum, in its order: X(name).
-#define EDGEWISE_FOR_EACH_ISA(X) X(reference) X(sse2) X(sse4_1) X(avx2) X(neon)
+#define EDGEWISE_FOR_EACH_ISA(X) X(reference) X(sse2) X(sse4_1) X(avx2) X(avx512) X(neon)
 
 // The vectorized ISAs compiled for the target processor, worst first, as
 // X(name, xsimd architecture, whether this CPU runs it). The reference, compiled everywhere, is
 // not among them. GCC's __builtin_cpu_supports includes the OS's support for the wider
 // registers (XGETBV).
 #if defined(__x86_64__) || defined(_M_X64)
-#define EDGEWISE_FOR_EACH_SIMD_ISA(X)                        \
-  X(sse2, xsimd::sse2, __builtin_cpu_supports("sse2"))       \
-  X(sse4_1, xsimd::sse4_1, __builtin_cpu_supports("sse4.1")) \
-  X(avx2, xsimd::fma3<xsimd::avx2>, __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+#define EDGEWISE_FOR_EACH_SIMD_ISA(X)                                               \
+  X(sse2, xsimd::sse2, __builtin_cpu_supports("sse2"))                              \
+  X(sse4_1, xsimd::sse4_1, __builtin_cpu_supports("sse4.1"))                        \
+  X(avx2, xsimd::fma3<xsimd::avx2>,                                                 \
+    __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))                \
+  X(avx512, xsimd::avx512bw,                                                        \
+    __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&              \
+        __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512cd") &&  \
+        __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") && \
+        __builtin_cpu_supports("avx512vl"))
 #elif defined(__aarch64__)
 // Advanced SIMD is mandatory on AArch64.
 #define EDGEWISE_FOR_EACH_SIMD_ISA(X) X(neon, xsimd::neon64, true)

@@ -6,11 +6,12 @@
 
 #include "fast_interpolation.hpp"
 #include "generic/interpolation-inl.hpp"
+#include "generic/lane_arch-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 namespace {
 
-using Arch = EDGEWISE_ARCH;
+using Arch = RowArch<EDGEWISE_ARCH>;
 
 template <InterpolationMethod Method>
 WeightRow<Arch> screen_row_of(const ScreenTriangle& triangle, double origin_x, double origin_y,

@@ -1,7 +1,7 @@
 // Instruction sets: which kernels are compiled, which the CPU runs, and which one is used.
 //
 // The active ISA is, in order of precedence: a ScopedIsa/force_isa() override, the
-// EDGEWISE_ISA environment variable (reference|sse2|sse4_1|avx2|neon), or the best ISA
+// EDGEWISE_ISA environment variable (reference|sse2|sse4_1|avx2|avx512|neon), or the best ISA
 // this CPU supports. `reference` is the scalar oracle, available everywhere.
 //
 // Thread safety: every function may be called from any thread. EDGEWISE_ISA is read once, at the
@@ -20,7 +20,7 @@
 
 namespace edgewise {
 
-enum class Isa : int { reference, sse2, sse4_1, avx2, neon };
+enum class Isa : int { reference, sse2, sse4_1, avx2, avx512, neon };
 
 // ISAs built into this library, worst first (reference first).
 std::span<const Isa> compiled_isas();
