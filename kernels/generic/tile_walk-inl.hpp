@@ -17,6 +17,19 @@
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
+// Hands a tile's mask to the visitor if any sample is covered. A visitor that declares
+// kTakesEmptyMasks (one that only counts, to which an empty mask adds nothing) gets every mask
+// of the tiles walked: the walk then has no branch per tile.
+template <class Visitor>
+[[gnu::always_inline]] inline void deliver_tile(Visitor& visitor, std::uint32_t tile_x,
+                                                std::uint32_t tile_y, std::uint64_t mask) {
+  if constexpr (requires { Visitor::kTakesEmptyMasks; }) {
+    visitor.tile(tile_x, tile_y, mask);
+  } else if (mask != 0) {
+    visitor.tile(tile_x, tile_y, mask);
+  }
+}
+
 // Coverage of partial tiles, with the per-triangle lane constants hoisted.
 template <class Arch>
 class TileEvaluator {
@@ -172,7 +185,7 @@ class TileRowWalker {
     const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0]), clamp_to_tile_range(g[1]),
                                     clamp_to_tile_range(g[2])};
     const std::uint64_t mask = evaluator_.coverage(tile_g) & clip;
-    if (mask != 0) visitor_.tile(first_tile_x_ + static_cast<std::uint32_t>(column), tile_y, mask);
+    deliver_tile(visitor_, first_tile_x_ + static_cast<std::uint32_t>(column), tile_y, mask);
   }
 
   // Few tiles: reject tile by tile and evaluate the rest (evaluating a tile that every edge
@@ -279,8 +292,7 @@ template <std::size_t N, class Visitor>
   } else {
     for (std::uint32_t row = 0; row < N; ++row) {
       for (std::uint32_t column = 0; column < N; ++column) {
-        if (masks[row][column] != 0)
-          visitor.tile(tile_x + column, tile_y + row, masks[row][column]);
+        deliver_tile(visitor, tile_x + column, tile_y + row, masks[row][column]);
       }
     }
   }
