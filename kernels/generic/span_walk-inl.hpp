@@ -42,6 +42,7 @@ class StripSpans {
   static constexpr std::size_t kDoubleParts = kTileSize / Doubles::size;
   static constexpr std::size_t kIntParts = kTileSize / Ints::size;
   static constexpr bool kHorizontal = kLefts + kRights < 3;
+  static constexpr std::int32_t kBlockTiles = 3;  // tiles whose masks are made at once
 
   // `order` lists the setup's edges in the order above.
   StripSpans(const TriangleSetup& setup, const int (&order)[3]) {
@@ -132,16 +133,25 @@ class StripSpans {
     return range;
   }
 
-  // Mask of the tile whose first column is `column` (relative, a multiple of 8).
-  static std::uint64_t tile_mask(const Ints* begin, const Ints* end, std::int32_t column) {
-    Ints bytes[kIntParts];
+  // Masks of the (up to) kBlockTiles tiles from relative column `column` (a multiple of 8),
+  // the tiles from the count-th on left empty: each row's span is cut to the block as one
+  // 24-bit word (2^n is exact in float for n <= 24), whose bytes are the tiles' rows.
+  static void block_masks(const Ints* begin, const Ints* end, std::int32_t column,
+                          std::int32_t count, std::uint64_t (&masks)[kBlockTiles]) {
+    const std::int32_t width = kTileSize * (count < kBlockTiles ? count : kBlockTiles);
+    Ints words[kIntParts];
     for (std::size_t h = 0; h < kIntParts; ++h) {
-      const Ints zero(0), eight(kTileSize), at(column);
-      const Ints lo = xsimd::min(xsimd::max(begin[h] - at, zero), eight);
-      const Ints hi = xsimd::max(xsimd::min(end[h] - at, eight), lo);
-      bytes[h] = power_of_two<Arch>(hi) - power_of_two<Arch>(lo);  // bits lo .. hi - 1
+      const Ints zero(0), limit(width), at(column);
+      const Ints lo = xsimd::min(xsimd::max(begin[h] - at, zero), limit);
+      const Ints hi = xsimd::max(xsimd::min(end[h] - at, limit), lo);
+      words[h] = power_of_two<Arch>(hi) - power_of_two<Arch>(lo);  // bits lo .. hi - 1
     }
-    return low_bytes<Arch>(bytes);
+    for (int tile = 0; tile < kBlockTiles; ++tile) {
+      Ints bytes[kIntParts];
+      for (std::size_t h = 0; h < kIntParts; ++h)
+        bytes[h] = (words[h] >> (kTileSize * tile)) & Ints(0xFF);
+      masks[tile] = low_bytes<Arch>(bytes);
+    }
   }
 
  private:
@@ -159,6 +169,21 @@ inline bool span_walk_is_exact(const TriangleSetup& setup) {
     if (a != 0 && b >= a << 20) return false;
   }
   return true;
+}
+
+// Hands on the masks of tile columns [first, last) of a strip, kBlockTiles at a time.
+template <class Spans, class Visitor>
+[[gnu::always_inline]] inline void deliver_blocks(const typename Spans::Ints* begin,
+                                                  const typename Spans::Ints* end,
+                                                  std::int32_t first, std::int32_t last,
+                                                  std::uint32_t first_tile_x, std::uint32_t tile_y,
+                                                  std::uint64_t rows, Visitor& visitor) {
+  for (std::int32_t t = first; t < last; t += Spans::kBlockTiles) {
+    std::uint64_t masks[Spans::kBlockTiles];
+    Spans::block_masks(begin, end, t * kTileSize, last - t, masks);
+    for (std::int32_t i = 0; i < Spans::kBlockTiles; ++i)
+      deliver_tile(visitor, first_tile_x + t + i, tile_y, masks[i] & rows);
+  }
 }
 
 // walk_spans() for one edge set (see StripSpans): calls visitor.tile() for partial tiles and
@@ -188,27 +213,24 @@ template <class Arch, int kLefts, int kRights, class Visitor>
     spans.compute(start, lo, hi, begin, end);
     const TileColumns range = spans.columns(start, first_row, end_row - 1, lo, hi);
     const std::uint32_t tile_y = static_cast<std::uint32_t>(ty / kTileSize);
-    for (std::int32_t t = range.begin; t < range.full_begin; ++t) {
-      const std::uint64_t mask = Spans::tile_mask(begin, end, t * kTileSize) & rows;
-      deliver_tile(visitor, first_tile_x + t, tile_y, mask);
-    }
+    deliver_blocks<Spans>(begin, end, range.begin, range.full_begin, first_tile_x, tile_y, rows,
+                          visitor);
     if (range.full_begin < range.full_end) {
       visitor.full_tiles(first_tile_x + range.full_begin, first_tile_x + range.full_end, tile_y,
                          rows);
     }
-    for (std::int32_t t = range.full_end; t < range.end; ++t) {
-      const std::uint64_t mask = Spans::tile_mask(begin, end, t * kTileSize) & rows;
-      deliver_tile(visitor, first_tile_x + t, tile_y, mask);
-    }
+    deliver_blocks<Spans>(begin, end, range.full_end, range.end, first_tile_x, tile_y, rows,
+                          visitor);
     for (int i = 0; i < 3; ++i)
       g0[i] += g_step[i];
   }
 }
 
-// Calls visitor.tile() for partial tiles and visitor.full_tiles() for runs of whole tiles, in
-// row order, like walk_tiles(). The triangle's edge set is told apart once, here.
-template <class Arch, class Visitor>
-[[gnu::noinline]] void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
+// Calls walk.template operator()<kLefts, kRights>(order) for the triangle's edge set (see
+// StripSpans), with `order` listing its edges as that set orders them: the one branch on the
+// edges' signs per triangle.
+template <class Walk>
+[[gnu::always_inline]] inline void with_edge_set(const TriangleSetup& setup, const Walk& walk) {
   int order[3], lefts = 0, rights = 0;
   for (int e = 0; e < 3; ++e)
     lefts += setup.edge[e].a > 0;
@@ -220,12 +242,21 @@ template <class Arch, class Visitor>
     order[a > 0 ? next_left++ : (a < 0 ? next_right++ : next_horizontal++)] = e;
   }
   if (lefts == 2) {
-    walk_spans_of<Arch, 2, 1>(setup, order, visitor);
+    walk.template operator()<2, 1>(order);
   } else if (rights == 2) {
-    walk_spans_of<Arch, 1, 2>(setup, order, visitor);
+    walk.template operator()<1, 2>(order);
   } else {
-    walk_spans_of<Arch, 1, 1>(setup, order, visitor);
+    walk.template operator()<1, 1>(order);
   }
+}
+
+// Calls visitor.tile() for partial tiles and visitor.full_tiles() for runs of whole tiles, in
+// row order, like walk_tiles().
+template <class Arch, class Visitor>
+[[gnu::noinline]] void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
+  with_edge_set(setup, [&]<int kLefts, int kRights>(const int(&order)[3]) {
+    walk_spans_of<Arch, kLefts, kRights>(setup, order, visitor);
+  });
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE
