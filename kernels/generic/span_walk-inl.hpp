@@ -16,6 +16,8 @@
 // band (columns are below 2^16 from the first tile column) and is clamped to the box either way.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -23,50 +25,62 @@
 
 #include "simd_ops-inl.hpp"
 #include "tile_masks-inl.hpp"
+#include "tile_walk-inl.hpp"
 #include "triangle_setup-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
-template <class Arch>
+// The edges of one triangle as the span walk steps them, ordered left edges (a > 0) first, then
+// right edges (a < 0), then the horizontal edge if any. A triangle has one of three such edge
+// sets (its a's sum to zero): two left and one right, one left and two right, or one of each
+// kind. The set is a template argument, so the strip loop tests no edge's sign.
+template <class Arch, int kLefts, int kRights>
 class StripSpans {
  public:
   using Doubles = xsimd::batch<double, Arch>;
   using Ints = xsimd::batch<std::int32_t, Arch>;
   static constexpr std::size_t kDoubleParts = kTileSize / Doubles::size;
   static constexpr std::size_t kIntParts = kTileSize / Ints::size;
+  static constexpr bool kHorizontal = kLefts + kRights < 3;
+  static constexpr std::int32_t kBlockTiles = 3;  // tiles whose masks are made at once
 
-  explicit StripSpans(const TriangleSetup& setup) {
+  // `order` lists the setup's edges in the order above.
+  StripSpans(const TriangleSetup& setup, const int (&order)[3]) {
     alignas(64) static constexpr double kRow[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
-    for (int e = 0; e < 3; ++e) {
-      const EdgeSetup& edge = setup.edge[e];
+    for (int i = 0; i < 3; ++i) {
+      const EdgeSetup& edge = setup.edge[order[i]];
       // Horizontal edges step G itself (exact); the others step t (see above).
-      scale_[e] = edge.a != 0 ? -1.0 / edge.a : 1.0;
-      offset_[e] = edge.a != 0 ? 0.5 : 0.0;
-      const Doubles step(edge.a != 0 ? edge.b * scale_[e] : static_cast<double>(edge.b));
+      scale_[i] = edge.a != 0 ? -1.0 / edge.a : 1.0;
+      offset_[i] = edge.a != 0 ? 0.5 : 0.0;
+      const Doubles step(edge.a != 0 ? edge.b * scale_[i] : static_cast<double>(edge.b));
       for (std::size_t h = 0; h < kDoubleParts; ++h) {
-        row_term_[e][h] = step * Doubles::load_aligned(kRow + h * Doubles::size);
+        row_term_[i][h] = step * Doubles::load_aligned(kRow + h * Doubles::size);
+        row_term_[i][h].store_aligned(scalar_row_term_[i] + h * Doubles::size);
       }
     }
   }
 
+  // t at a strip's first row for each edge, from its G there (g0, in the edges' order).
+  void starts(const double (&g0)[3], double (&start)[3]) const {
+    for (int i = 0; i < 3; ++i)
+      start[i] = (g0[i] + offset_[i]) * scale_[i];
+  }
+
   // Spans of the 8 rows from a strip's first row, in columns from the box's first tile:
-  // begin[] and end[] (begin >= end when a row is empty). `g0` is each edge's G at the strip's
-  // first row and first tile column; [lo, hi) the box's columns.
-  void compute(const TriangleSetup& setup, const double g0[3], double lo, double hi, Ints* begin,
-               Ints* end) const {
+  // begin[] and end[] (begin >= end when a row is empty); [lo, hi) are the box's columns.
+  void compute(const double (&start)[3], double lo, double hi, Ints* begin, Ints* end) const {
     Doubles first[kDoubleParts], last[kDoubleParts];  // last is exclusive
     for (std::size_t h = 0; h < kDoubleParts; ++h) {
       first[h] = Doubles(lo);
       last[h] = Doubles(hi);
     }
-    for (int e = 0; e < 3; ++e) {
-      const std::int32_t a = setup.edge[e].a;
-      const Doubles start((g0[e] + offset_[e]) * scale_[e]);
+    for (int i = 0; i < 3; ++i) {
+      const Doubles at(start[i]);
       for (std::size_t h = 0; h < kDoubleParts; ++h) {
-        const Doubles t = start + row_term_[e][h];
-        if (a > 0) {
+        const Doubles t = at + row_term_[i][h];
+        if (i < kLefts) {
           first[h] = xsimd::max(first[h], xsimd::ceil(t));
-        } else if (a < 0) {
+        } else if (i < kLefts + kRights) {
           last[h] = xsimd::min(last[h], xsimd::ceil(t));
         } else {  // horizontal: t is G, and the whole row is in or out
           last[h] = xsimd::select(t < Doubles(0.0), Doubles(lo), last[h]);
@@ -81,21 +95,69 @@ class StripSpans {
     to_int32_rows<Arch>(last, end);
   }
 
-  // Mask of the tile whose first column is `column` (relative, a multiple of 8).
-  static std::uint64_t tile_mask(const Ints* begin, const Ints* end, std::int32_t column) {
-    Ints bytes[kIntParts];
-    for (std::size_t h = 0; h < kIntParts; ++h) {
-      const Ints zero(0), eight(kTileSize), at(column);
-      const Ints lo = xsimd::min(xsimd::max(begin[h] - at, zero), eight);
-      const Ints hi = xsimd::max(xsimd::min(end[h] - at, eight), lo);
-      bytes[h] = power_of_two<Arch>(hi) - power_of_two<Arch>(lo);  // bits lo .. hi - 1
+  // The strip's tile columns from its rows first_row .. last_row alone, in scalar arithmetic
+  // apart from compute(), so that the walk's loop bounds do not wait for the vector spans.
+  // t is computed as compute() computes it, and it is monotonic in the row (a sum and a
+  // product, each rounded monotonically), so each edge's extreme t over the rows lies at
+  // first_row or last_row. Hence:
+  //  - no covered column lies outside [max over left edges of the smaller ceil(t),
+  //    min over right edges of the larger ceil(t)): the tiles that can have covered samples;
+  //  - every row covers [max over left edges of the larger ceil(t), min over right edges of
+  //    the smaller ceil(t)) when a horizontal edge excludes neither end row: the tiles inside
+  //    it are full (a row's span is exactly the intersection of its edges' half-planes).
+  TileColumns columns(const double (&start)[3], int first_row, int last_row, double lo,
+                      double hi) const {
+    double outer_begin = lo, outer_end = hi, inner_begin = lo, inner_end = hi;
+    for (int i = 0; i < 3; ++i) {
+      const double t0 = start[i] + scalar_row_term_[i][first_row];
+      const double t1 = start[i] + scalar_row_term_[i][last_row];
+      const double low = t0 < t1 ? t0 : t1, high = t0 < t1 ? t1 : t0;
+      if (i < kLefts) {
+        outer_begin = std::max(outer_begin, std::ceil(low));
+        inner_begin = std::max(inner_begin, std::ceil(high));
+      } else if (i < kLefts + kRights) {
+        outer_end = std::min(outer_end, std::ceil(high));
+        inner_end = std::min(inner_end, std::ceil(low));
+      } else {
+        inner_end = low < 0.0 ? lo : inner_end;
+      }
     }
-    return low_bytes<Arch>(bytes);
+    // Within [lo, hi] (lo >= 0), so the conversions are exact and shifts floor.
+    const std::int32_t begin = static_cast<std::int32_t>(std::min(outer_begin, hi));
+    const std::int32_t end = static_cast<std::int32_t>(std::max(outer_end, lo));
+    const std::int32_t full_begin = static_cast<std::int32_t>(std::min(inner_begin, hi));
+    const std::int32_t full_end = static_cast<std::int32_t>(std::max(inner_end, lo));
+    TileColumns range{begin >> 3, (end + 7) >> 3, (full_begin + 7) >> 3, full_end >> 3};
+    if (range.begin >= range.end) range.end = range.begin;
+    if (range.full_begin >= range.full_end) range.full_begin = range.full_end = range.end;
+    return range;
+  }
+
+  // Masks of the (up to) kBlockTiles tiles from relative column `column` (a multiple of 8),
+  // the tiles from the count-th on left empty: each row's span is cut to the block as one
+  // 24-bit word (2^n is exact in float for n <= 24), whose bytes are the tiles' rows.
+  static void block_masks(const Ints* begin, const Ints* end, std::int32_t column,
+                          std::int32_t count, std::uint64_t (&masks)[kBlockTiles]) {
+    const std::int32_t width = kTileSize * (count < kBlockTiles ? count : kBlockTiles);
+    Ints words[kIntParts];
+    for (std::size_t h = 0; h < kIntParts; ++h) {
+      const Ints zero(0), limit(width), at(column);
+      const Ints lo = xsimd::min(xsimd::max(begin[h] - at, zero), limit);
+      const Ints hi = xsimd::max(xsimd::min(end[h] - at, limit), lo);
+      words[h] = power_of_two<Arch>(hi) - power_of_two<Arch>(lo);  // bits lo .. hi - 1
+    }
+    for (int tile = 0; tile < kBlockTiles; ++tile) {
+      Ints bytes[kIntParts];
+      for (std::size_t h = 0; h < kIntParts; ++h)
+        bytes[h] = (words[h] >> (kTileSize * tile)) & Ints(0xFF);
+      masks[tile] = low_bytes<Arch>(bytes);
+    }
   }
 
  private:
   double scale_[3], offset_[3];        // t at a strip's first row: (G0 + offset) * scale
   Doubles row_term_[3][kDoubleParts];  // t at row k minus t at row 0
+  alignas(64) double scalar_row_term_[3][kTileSize];  // the same, one row at a time
 };
 
 // The exactness argument above needs every non-horizontal edge to satisfy |b| < 2^20 |a|;
@@ -109,65 +171,92 @@ inline bool span_walk_is_exact(const TriangleSetup& setup) {
   return true;
 }
 
-// Calls visitor.tile() for partial tiles and visitor.full_tiles() for runs of whole tiles, in
-// row order, like walk_tiles().
-template <class Arch, class Visitor>
-[[gnu::noinline]] void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
-  using Spans = StripSpans<Arch>;
-  const Spans spans(setup);
+// Hands on the masks of tile columns [first, last) of a strip, kBlockTiles at a time.
+template <class Spans, class Visitor>
+[[gnu::always_inline]] inline void deliver_blocks(const typename Spans::Ints* begin,
+                                                  const typename Spans::Ints* end,
+                                                  std::int32_t first, std::int32_t last,
+                                                  std::uint32_t first_tile_x, std::uint32_t tile_y,
+                                                  std::uint64_t rows, Visitor& visitor) {
+  for (std::int32_t t = first; t < last; t += Spans::kBlockTiles) {
+    std::uint64_t masks[Spans::kBlockTiles];
+    Spans::block_masks(begin, end, t * kTileSize, last - t, masks);
+    for (std::int32_t i = 0; i < Spans::kBlockTiles; ++i)
+      deliver_tile(visitor, first_tile_x + t + i, tile_y, masks[i] & rows);
+  }
+}
+
+// walk_spans() for one edge set (see StripSpans): calls visitor.tile() for partial tiles and
+// visitor.full_tiles() for runs of whole tiles, in row order, like walk_tiles().
+template <class Arch, int kLefts, int kRights, class Visitor>
+[[gnu::always_inline]] inline void walk_spans_of(const TriangleSetup& setup, const int (&order)[3],
+                                                 Visitor& visitor) {
+  using Spans = StripSpans<Arch, kLefts, kRights>;
+  const Spans spans(setup, order);
   const PixelRect& box = setup.box;
   // Columns relative to origin_x; G at column 0 of each strip steps by 8 b per strip.
   const double lo = box.x0 - setup.origin_x, hi = box.x1 - setup.origin_x;
   const std::uint32_t first_tile_x = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
-  double g0[3];
-  for (int e = 0; e < 3; ++e)
-    g0[e] = static_cast<double>(setup.edge[e].g);
-  alignas(64) static constexpr std::int32_t kRowIndex[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
+  double g0[3], g_step[3];
+  for (int i = 0; i < 3; ++i) {
+    g0[i] = static_cast<double>(setup.edge[order[i]].g);
+    g_step[i] = kTileSize * static_cast<double>(setup.edge[order[i]].b);
+  }
   typename Spans::Ints begin[Spans::kIntParts], end[Spans::kIntParts];
 
   for (std::int32_t ty = setup.origin_y; ty < box.y1; ty += kTileSize) {
     const int first_row = box.y0 > ty ? box.y0 - ty : 0;
     const int end_row = box.y1 - ty < kTileSize ? box.y1 - ty : kTileSize;
     const std::uint64_t rows = row_bits(first_row, end_row);
-    spans.compute(setup, g0, lo, hi, begin, end);
-    // Over the rows inside the box: the union of the spans, and their intersection. Spans lie
-    // in [lo, hi], far inside +-kUnused, so negated ends take maxima as minima.
-    using Ints = typename Spans::Ints;
-    constexpr std::int32_t kUnused = 1 << 30;
-    Ints bounds[4] = {Ints(kUnused), Ints(kUnused), Ints(kUnused), Ints(kUnused)};
-    for (std::size_t h = 0; h < Spans::kIntParts; ++h) {
-      const Ints row = Ints::load_aligned(kRowIndex + h * Ints::size);
-      const auto in_box = row >= Ints(first_row) && row < Ints(end_row);
-      const auto covered = in_box && begin[h] < end[h];
-      bounds[0] = xsimd::min(bounds[0], xsimd::select(covered, begin[h], Ints(kUnused)));
-      bounds[1] = xsimd::min(bounds[1], xsimd::select(covered, -end[h], Ints(kUnused)));
-      bounds[2] = xsimd::min(bounds[2], xsimd::select(in_box, -begin[h], Ints(kUnused)));
-      bounds[3] = xsimd::min(bounds[3], xsimd::select(in_box, end[h], Ints(kUnused)));
+    double start[3];
+    spans.starts(g0, start);
+    spans.compute(start, lo, hi, begin, end);
+    const TileColumns range = spans.columns(start, first_row, end_row - 1, lo, hi);
+    const std::uint32_t tile_y = static_cast<std::uint32_t>(ty / kTileSize);
+    deliver_blocks<Spans>(begin, end, range.begin, range.full_begin, first_tile_x, tile_y, rows,
+                          visitor);
+    if (range.full_begin < range.full_end) {
+      visitor.full_tiles(first_tile_x + range.full_begin, first_tile_x + range.full_end, tile_y,
+                         rows);
     }
-    std::int32_t minima[4];
-    horizontal_min4<Arch>(bounds, minima);
-    const std::int32_t union_begin = minima[0], union_end = -minima[1];
-    const std::int32_t common_begin = -minima[2], common_end = minima[3];
-    if (union_begin < union_end) {
-      const std::int32_t tile_begin = union_begin >> 3, tile_end = (union_end + 7) >> 3;
-      std::int32_t full_begin = (common_begin + 7) >> 3, full_end = common_end >> 3;
-      if (full_begin >= full_end) full_begin = full_end = tile_end;
-      const std::uint32_t tile_y = static_cast<std::uint32_t>(ty / kTileSize);
-      for (std::int32_t t = tile_begin; t < full_begin; ++t) {
-        const std::uint64_t mask = Spans::tile_mask(begin, end, t * kTileSize) & rows;
-        if (mask != 0) visitor.tile(first_tile_x + t, tile_y, mask);
-      }
-      if (full_begin < full_end) {
-        visitor.full_tiles(first_tile_x + full_begin, first_tile_x + full_end, tile_y, rows);
-      }
-      for (std::int32_t t = full_end; t < tile_end; ++t) {
-        const std::uint64_t mask = Spans::tile_mask(begin, end, t * kTileSize) & rows;
-        if (mask != 0) visitor.tile(first_tile_x + t, tile_y, mask);
-      }
-    }
-    for (int e = 0; e < 3; ++e)
-      g0[e] += kTileSize * static_cast<double>(setup.edge[e].b);
+    deliver_blocks<Spans>(begin, end, range.full_end, range.end, first_tile_x, tile_y, rows,
+                          visitor);
+    for (int i = 0; i < 3; ++i)
+      g0[i] += g_step[i];
   }
+}
+
+// Calls walk.template operator()<kLefts, kRights>(order) for the triangle's edge set (see
+// StripSpans), with `order` listing its edges as that set orders them: the one branch on the
+// edges' signs per triangle.
+template <class Walk>
+[[gnu::always_inline]] inline void with_edge_set(const TriangleSetup& setup, const Walk& walk) {
+  int order[3], lefts = 0, rights = 0;
+  for (int e = 0; e < 3; ++e)
+    lefts += setup.edge[e].a > 0;
+  for (int e = 0; e < 3; ++e)
+    rights += setup.edge[e].a < 0;
+  int next_left = 0, next_right = lefts, next_horizontal = lefts + rights;
+  for (int e = 0; e < 3; ++e) {
+    const std::int32_t a = setup.edge[e].a;
+    order[a > 0 ? next_left++ : (a < 0 ? next_right++ : next_horizontal++)] = e;
+  }
+  if (lefts == 2) {
+    walk.template operator()<2, 1>(order);
+  } else if (rights == 2) {
+    walk.template operator()<1, 2>(order);
+  } else {
+    walk.template operator()<1, 1>(order);
+  }
+}
+
+// Calls visitor.tile() for partial tiles and visitor.full_tiles() for runs of whole tiles, in
+// row order, like walk_tiles().
+template <class Arch, class Visitor>
+[[gnu::noinline]] void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
+  with_edge_set(setup, [&]<int kLefts, int kRights>(const int(&order)[3]) {
+    walk_spans_of<Arch, kLefts, kRights>(setup, order, visitor);
+  });
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

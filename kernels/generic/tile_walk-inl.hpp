@@ -18,6 +18,20 @@
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
+// Hands a tile's mask to the visitor if any sample is covered. A visitor that declares
+// kTakesEmptyMasks (one that only counts, to which an empty mask adds nothing) is handed every
+// mask the walk makes, empty ones too (also of tiles just past the box), so that the walks
+// have no branch per tile for it.
+template <class Visitor>
+[[gnu::always_inline]] inline void deliver_tile(Visitor& visitor, std::uint32_t tile_x,
+                                                std::uint32_t tile_y, std::uint64_t mask) {
+  if constexpr (requires { Visitor::kTakesEmptyMasks; }) {
+    visitor.tile(tile_x, tile_y, mask);
+  } else if (mask != 0) {
+    visitor.tile(tile_x, tile_y, mask);
+  }
+}
+
 // Coverage of partial tiles, with the per-triangle lane constants hoisted. A batch holds part of
 // a tile row (4 lanes), one row (8) or several whole rows (16 lanes: rows r and r + 1).
 template <class Arch>
@@ -185,7 +199,7 @@ class TileRowWalker {
     const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0]), clamp_to_tile_range(g[1]),
                                     clamp_to_tile_range(g[2])};
     const std::uint64_t mask = evaluator_.coverage(tile_g) & clip;
-    if (mask != 0) visitor_.tile(first_tile_x_ + static_cast<std::uint32_t>(column), tile_y, mask);
+    deliver_tile(visitor_, first_tile_x_ + static_cast<std::uint32_t>(column), tile_y, mask);
   }
 
   // Few tiles: reject tile by tile and evaluate the rest (evaluating a tile that every edge
@@ -196,7 +210,12 @@ class TileRowWalker {
     for (std::int32_t column = 0; column < columns_; ++column) {
       const bool rejected =
           (g[0] + max_offset_[0] < 0) | (g[1] + max_offset_[1] < 0) | (g[2] + max_offset_[2] < 0);
-      if (!rejected) evaluate(g, column, tile_y, rows & scan_column_clip[column]);
+      if constexpr (requires { Visitor::kTakesEmptyMasks; }) {
+        // A rejected tile's mask is empty: evaluating it costs less than a mispredicted test.
+        evaluate(g, column, tile_y, rejected ? 0 : rows & scan_column_clip[column]);
+      } else if (!rejected) {
+        evaluate(g, column, tile_y, rows & scan_column_clip[column]);
+      }
       for (int e = 0; e < 3; ++e)
         g[e] += step_x_[e];
     }
@@ -292,8 +311,7 @@ template <std::size_t N, class Visitor>
   } else {
     for (std::uint32_t row = 0; row < N; ++row) {
       for (std::uint32_t column = 0; column < N; ++column) {
-        if (masks[row][column] != 0)
-          visitor.tile(tile_x + column, tile_y + row, masks[row][column]);
+        deliver_tile(visitor, tile_x + column, tile_y + row, masks[row][column]);
       }
     }
   }

@@ -11,6 +11,7 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 namespace {
 
 struct CountingVisitor {
+  static constexpr bool kTakesEmptyMasks = true;  // an empty mask counts no pixel
   std::uint64_t pixels = 0;
   void begin_triangle(std::uint32_t) {}
   void tile(std::uint32_t, std::uint32_t, std::uint64_t mask) {
