@@ -345,8 +345,11 @@ class TextureFilters {
     const Floats u0 = xsimd::floor(u), v0 = xsimd::floor(v);
     const Floats fu = u - u0, fv = v - v0;
     const Ints x0 = xsimd::to_int(u0), y0 = xsimd::to_int(v0);
-    const auto [xa, xb] = wrap_tap_pair<Arch>(x0, level.width, options_.wrap_s);
+    // Named copies, not structured bindings: lambdas may capture the latter only from C++20
+    // compilers that implement P1091 (clang 16 on), and the fuzz build uses clang 14.
+    const auto columns = wrap_tap_pair<Arch>(x0, level.width, options_.wrap_s);
     const auto [ya, yb] = wrap_tap_pair<Arch>(y0, level.height, options_.wrap_t);
+    const Ints xa = columns.first, xb = columns.second;
     const Floats gu = Floats(1.0f) - fu;
     const bool adjacent = xsimd::all(xb == xa + Ints(1));
     const auto* texels = reinterpret_cast<const std::int32_t*>(texture_.texels);
