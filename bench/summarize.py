@@ -79,7 +79,7 @@ DRAW_PEER_WORKLOADS = {
     "ground_plane/trilinear": ("TexturedDraw", "trilinear", "items_per_second", "px/s"),
     "ground_plane/anisotropic16": ("TexturedDraw", "anisotropic", "items_per_second", "px/s"),
 }
-ISA_ORDER = ["reference", "sse2", "sse4_1", "avx2", "neon"]
+ISA_ORDER = ["reference", "sse2", "sse4_1", "avx2", "avx512", "neon"]
 METHOD_ORDER = ["nearest_vertex", "inverse_distance", "subtriangle_areas", "edge_functions",
                 "scanline", "plane_equations"]
 

@@ -23,7 +23,6 @@
 #include "interpolation-inl.hpp"
 #include "plane_setup-inl.hpp"
 #include "simd_ops-inl.hpp"
-#include "texel_fetch-inl.hpp"
 #include "texture_tile-inl.hpp"
 #include "tile_masks-inl.hpp"
 
@@ -204,18 +203,6 @@ class ShadingVisitor {
   template <DepthTest Test, std::size_t N>
   [[gnu::always_inline]] void shade_grid(std::uint32_t tile_x, std::uint32_t tile_y,
                                          const std::uint64_t (&masks)[N][N]) {
-    if constexpr (N == 2 && Method == InterpolationMethod::plane_equations &&
-                  (Test == DepthTest::less || Test == DepthTest::less_equal)) {
-      if (colour_planes_ && batch_.depth_write) {
-        const auto lit = [&](auto divide) {
-          if (normal_planes_) {
-            return shade_fragments<Test, decltype(divide)::value, true>(tile_x, tile_y, masks);
-          }
-          return shade_fragments<Test, decltype(divide)::value, false>(tile_x, tile_y, masks);
-        };
-        return perspective_ ? lit(std::true_type{}) : lit(std::false_type{});
-      }
-    }
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
     const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
     std::uint64_t in_column[N] = {}, in_row[N] = {};
@@ -276,107 +263,6 @@ class ShadingVisitor {
         }
       }
     }
-  }
-
-  // A triangle within 8x8 pixels covers at most 64 pixels, a handful of them in each of its
-  // rows: rather than a batch per covered row of each tile (8 lanes for two or three pixels),
-  // its covered pixels are packed into batches of lanes, each lane a pixel of any row or tile.
-  // Per pixel the depth, colour and normal are the same float operations as shade_planar_rows()
-  // (so depth and test outcomes stay bit-identical): the row term from the pixel's dy, then the
-  // column term from its dx. Stored depths are gathered; the passing pixels are written one by
-  // one. Hidden tiles are skipped whole as in shade_grid(); under less and less_equal the tile
-  // depth bounds need no update (see shade_grid()).
-  template <DepthTest Test, bool Divide, bool Lit>
-  [[gnu::always_inline]] void shade_fragments(std::uint32_t tile_x, std::uint32_t tile_y,
-                                              const std::uint64_t (&masks)[2][2]) {
-    constexpr std::size_t kMaxPixels = 64;  // a box of at most 8x8 pixels
-    // Each covered pixel as (tile row << 7) | (tile column << 6) | its bit in the tile's mask.
-    alignas(64) std::int32_t codes[kMaxPixels + kLanes];
-    std::size_t count = 0;
-    for (std::uint32_t row = 0; row < 2; ++row) {
-      for (std::uint32_t column = 0; column < 2; ++column) {
-        std::uint64_t mask = masks[row][column];
-        if (mask == 0) continue;
-        const std::size_t tile_index =
-            static_cast<std::size_t>(tile_y + row) * static_cast<std::size_t>(batch_.tiles_x) +
-            tile_x + column;
-        fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
-        if (reject_hidden_ && !(batch_.tile_max_depth[tile_index] > max_vertex_depth_) &&
-            hidden(batch_.tile_max_depth[tile_index],
-                   static_cast<std::int32_t>(tile_x + column) * kTileSize,
-                   static_cast<std::int32_t>(tile_y + row) * kTileSize)) {
-          ++tiles_skipped_;
-          continue;
-        }
-        const std::int32_t tile_code = static_cast<std::int32_t>(row << 7 | column << 6);
-        for (; mask != 0; mask &= mask - 1)
-          codes[count++] = tile_code | std::countr_zero(mask);
-      }
-    }
-    if (count == 0) return;
-    // The last batch's unused lanes repeat the first pixel: their loads stay in bounds, and
-    // they are never written.
-    for (std::size_t l = count; l < count + kLanes; ++l)
-      codes[l] = codes[0];
-    const Ints first_x(static_cast<std::int32_t>(tile_x) * kTileSize);
-    const Ints first_y(static_cast<std::int32_t>(tile_y) * kTileSize);
-    // Offsets in the tiled buffers: tile (tile_x, tile_y)'s first sample, and one tile row down.
-    const Ints first_offset(static_cast<std::int32_t>(
-        (static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(batch_.tiles_x) + tile_x) *
-        64));
-    const Ints row_stride(static_cast<std::int32_t>(batch_.tiles_x) * 64);
-    alignas(64) std::int32_t offsets[kLanes];
-    std::uint64_t passed = 0;
-    for (std::size_t first = 0; first < count; first += kLanes) {
-      const Ints code = Ints::load_aligned(codes + first);
-      const Ints bit = code & Ints(63);
-      const Ints column = (code >> 6) & Ints(1);
-      const Ints row = code >> 7;
-      const Ints x = first_x + (column << 3) + (bit & Ints(7));
-      const Ints y = first_y + (row << 3) + (bit >> 3);
-      const Ints offset = first_offset + (row_stride & (Ints(0) - row)) + (column << 6) + bit;
-      const Floats dx = (xsimd::to_float(x) + Floats(0.5f)) - Floats(depth_.x0);
-      const Floats dy = (xsimd::to_float(y) + Floats(0.5f)) - Floats(depth_.y0);
-      const Floats z =
-          clamp01((Floats(depth_.z0) + Floats(depth_.dzdy) * dy) + Floats(depth_.dzdx) * dx);
-      const Floats stored = gather_float<Arch>(batch_.depth_tiles, offset);
-      const std::size_t lanes = count - first < kLanes ? count - first : kLanes;
-      const Mask write = passes<Test>(z, stored) &&
-                         lanes_of_bits<Arch>(static_cast<std::uint32_t>((1u << lanes) - 1));
-      const std::uint32_t write_bits = bits_of_lanes<Arch>(write);
-      if (write_bits == 0) continue;
-      passed += static_cast<std::uint64_t>(std::popcount(write_bits));
-      const auto plane = [&](int k) {
-        return (Floats(plane_[k].at_vertex) + Floats(plane_[k].dy) * dy) +
-               Floats(plane_[k].dx) * dx;
-      };
-      Floats channel[4];
-      for (int k = 0; k < 4; ++k)
-        channel[k] = plane(k);
-      if constexpr (Divide) {
-        const Floats w = Floats(1.0f) / plane(4);
-        for (int k = 0; k < 4; ++k)
-          channel[k] = channel[k] * w;
-      }
-      if constexpr (Lit) {
-        Floats normal[kNormalPlanes];
-        for (int k = 0; k < kNormalPlanes; ++k)
-          normal[k] = plane(kFirstNormalPlane + k);
-        apply_light(normal, channel);
-      }
-      alignas(64) float new_depth[kLanes];
-      alignas(64) std::uint32_t new_color[kLanes];
-      z.store_aligned(new_depth);
-      pack_rgba8_lanes<Arch>(channel).store_aligned(reinterpret_cast<std::int32_t*>(new_color));
-      offset.store_aligned(offsets);
-      for (std::uint32_t bits = write_bits; bits != 0; bits &= bits - 1) {
-        const int l = std::countr_zero(bits);
-        const std::size_t at = static_cast<std::size_t>(offsets[l]);
-        batch_.depth_tiles[at] = new_depth[l];
-        batch_.color_tiles[at] = new_color[l];
-      }
-    }
-    passed_ += passed;
   }
 
   // The tile's largest depth, over all 64 values after the writes, as its new bound:

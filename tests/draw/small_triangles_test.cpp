@@ -1,7 +1,7 @@
-// draw() of triangles within 8x8 and 16x16 pixels, the small-triangle path (their covered pixels
-// packed into batches of lanes, or their tile grid shaded row by row): on every ISA, depth and
-// counts equal to the reference bit for bit, with hierarchical depth on and off and every depth
-// test, for Gouraud and diffuse shading, and colours within the derived bound.
+// draw() of triangles within 8x8 and 16x16 pixels, the small-triangle path (block masks without
+// the tile walk, the tile grid shaded a covered row at a time): on every ISA, depth and counts
+// equal to the reference bit for bit, with hierarchical depth on and off and every depth test,
+// for Gouraud and diffuse shading, and colours within the derived bound.
 #include <gtest/gtest.h>
 
 #include <algorithm>
