@@ -411,6 +411,14 @@ def print_draw_peers(peers, shading, draws):
     measured = [isa for isa in ISA_ORDER if isa != "reference" and
                 any(edgewise_entry(w, isa) for w in workloads)]
     isa = measured[-1] if measured else None
+
+    def widest_entry(workload):
+        """The entry of the widest ISA measured for this workload, and that ISA."""
+        for candidate in reversed(measured):
+            entry = edgewise_entry(workload, candidate)
+            if entry:
+                return entry, candidate
+        return None, None
     for peer in sorted({k[0] for k in peers}):
         print(f"drawing peer: {peer} on the same work as edgewise ({isa or 'not measured'}, one "
               "thread): median rates, and edgewise / peer (> 1: edgewise faster)")
@@ -420,8 +428,9 @@ def print_draw_peers(peers, shading, draws):
         rows = []
         for workload in workloads:
             _, _, counter, unit = DRAW_PEER_WORKLOADS[workload]
-            mine = edgewise_entry(workload, isa) if isa else None
-            row = [workload, si(mine[counter], unit) if mine else "-"]
+            mine, mine_isa = widest_entry(workload)
+            row = [workload, si(mine[counter], unit) + ("" if mine_isa == isa else f" ({mine_isa})")
+                   if mine else "-"]
             ratios, cvs, utilization = [], [], []
             difference = "-"
             for threads in ("1", "default"):
