@@ -133,12 +133,19 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
     }
     const std::uint32_t visible_lanes =
         setup_triangles<Arch>(group, batch.clip, batch.cull, setups, statuses, visible);
-    // A whole group of visible triangles with none waiting is set up where it is: gathering
-    // pays only where some lanes drop out.
-    bool in_place = false;
+    // A whole group of visible triangles with none waiting is set up and drawn where it is:
+    // gathering pays only where some lanes drop out.
     if constexpr (kGrouped) {
-      in_place = gathered.count == 0 && all_valid && visible_lanes == (1u << kLanes) - 1;
-      if (in_place) visitor.begin_group(corners, group);
+      if (gathered.count == 0 && all_valid && visible_lanes == (1u << kLanes) - 1) {
+        visitor.begin_group(corners, group);
+        report.drawn += kLanes;
+        for (std::size_t l = 0; l < kLanes; ++l) {
+          if (batch.statuses != nullptr) batch.statuses[first + l] = TriangleStatus::drawn;
+          visitor.begin_triangle(static_cast<std::uint32_t>(first + l), l);
+          walk_triangle(setups[l], visitor);
+        }
+        continue;
+      }
     }
     for (std::size_t l = 0; l < count; ++l) {
       const std::size_t t = first + l;
@@ -152,13 +159,8 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
       ++report.drawn;
       if (!visible[l]) continue;
       if constexpr (kGrouped) {
-        if (in_place) {
-          visitor.begin_triangle(static_cast<std::uint32_t>(t), l);
-          walk_triangle(setups[l], visitor);
-        } else {
-          gathered.add(static_cast<std::uint32_t>(t), group, corners, l, setups[l]);
-          if (gathered.count == kLanes) gathered.draw(visitor);
-        }
+        gathered.add(static_cast<std::uint32_t>(t), group, corners, l, setups[l]);
+        if (gathered.count == kLanes) gathered.draw(visitor);
       } else {
         visitor.begin_triangle(static_cast<std::uint32_t>(t));
         walk_triangle(setups[l], visitor);
