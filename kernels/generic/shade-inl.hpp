@@ -697,8 +697,8 @@ class ShadingVisitor {
     }
   }
 
-  // Diffuse light on R, G and B: ambient + (1 - ambient) max(0, n . l / |n|), the normal `n`
-  // from its planes (any positive multiple of the normal gives the same light).
+  // Diffuse light on R, G and B: ambient + (1 - ambient) max(0, n . l / |n|), with `n` the
+  // interpolated normal or its planes' value (any positive multiple gives the same light).
   [[gnu::always_inline]] void apply_light(const Floats (&n)[kNormalPlanes], Floats* channel) const {
     const Floats length = xsimd::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const Floats facing = n[0] * Floats(batch_.light.x) + n[1] * Floats(batch_.light.y) +
@@ -729,21 +729,13 @@ class ShadingVisitor {
     for (int k = 0; k < 4; ++k)
       rgba[k] = w.b[0] * Floats(c0[k]) + w.b[1] * Floats(c1[k]) + w.b[2] * Floats(c2[k]);
     if (batch_.shading == Shading::diffuse) {
-      Floats n[3];
+      Floats n[kNormalPlanes];
       const float* n0 = &normal_[0].x;
       const float* n1 = &normal_[1].x;
       const float* n2 = &normal_[2].x;
       for (int k = 0; k < 3; ++k)
         n[k] = w.b[0] * Floats(n0[k]) + w.b[1] * Floats(n1[k]) + w.b[2] * Floats(n2[k]);
-      const Floats length = xsimd::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      const Floats facing = n[0] * Floats(batch_.light.x) + n[1] * Floats(batch_.light.y) +
-                            n[2] * Floats(batch_.light.z);
-      // A zero normal gives no direct light, not NaN.
-      const Floats lambert = xsimd::select(length > Floats(0.0f),
-                                           xsimd::max(facing / length, Floats(0.0f)), Floats(0.0f));
-      const Floats light = Floats(batch_.ambient) + Floats(1.0f - batch_.ambient) * lambert;
-      for (int k = 0; k < 3; ++k)
-        rgba[k] = rgba[k] * light;
+      apply_light(n, rgba);
     }
     for (int k = 0; k < 4; ++k)
       rgba[k] = rgba[k] * Floats(255.0f);
