@@ -59,8 +59,14 @@ TriangleStatus snap_and_classify(const Vec2& p0, const Vec2& p1, const Vec2& p2,
 }
 
 bool covers(const SnappedTriangle& t, std::int32_t px, std::int32_t py) {
-  const std::int64_t sx = std::int64_t{px} * 256 + 128;  // the pixel's center
-  const std::int64_t sy = std::int64_t{py} * 256 + 128;
+  return covers_sample(t, px, py, SampleOffset{0, 0});
+}
+
+bool covers_sample(const SnappedTriangle& t, std::int32_t px, std::int32_t py,
+                   SampleOffset offset) {
+  // The pixel's centre moved by the offset (1/16 px = 16 fixed-point steps).
+  const std::int64_t sx = std::int64_t{px} * 256 + 128 + 16 * std::int64_t{offset.x};
+  const std::int64_t sy = std::int64_t{py} * 256 + 128 + 16 * std::int64_t{offset.y};
   const std::int64_t area2 = cross(t.x[0], t.y[0], t.x[1], t.y[1], t.x[2], t.y[2]);
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;

@@ -10,6 +10,7 @@
 #include <functional>
 
 #include "edgewise/coverage.hpp"
+#include "edgewise/multisample.hpp"
 
 namespace edgewise::detail {
 struct TriangleBatch;
@@ -30,6 +31,11 @@ TriangleStatus snap_and_classify(const Vec2& p0, const Vec2& p1, const Vec2& p2,
 
 // Whether the sample of pixel (px, py) is covered (the triangle must have nonzero area).
 bool covers(const SnappedTriangle& tri, std::int32_t px, std::int32_t py);
+
+// The same for the pixel's sample at `offset` from its centre (multisample.hpp): the same edge
+// functions and top-left rule, at a point of the same 1/256 px grid.
+bool covers_sample(const SnappedTriangle& tri, std::int32_t px, std::int32_t py,
+                   SampleOffset offset);
 
 // Pixels that may hold a covered sample (a generous box; covers() decides), clipped.
 PixelRect candidate_pixels(const SnappedTriangle& tri, const PixelRect& clip);

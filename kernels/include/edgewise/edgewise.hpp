@@ -6,6 +6,7 @@
 #include "edgewise/interpolation.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/coverage.hpp"
+#include "edgewise/multisample.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
