@@ -26,7 +26,7 @@ class CollectingSink final : public CoverageSink {
 
 bool same_tile(const TileCoverage& a, const TileCoverage& b) {
   return a.triangle == b.triangle && a.tile_x == b.tile_x && a.tile_y == b.tile_y &&
-         a.mask == b.mask;
+         a.mask == b.mask && a.sample == b.sample;
 }
 
 void append_pixels(const TileCoverage& tile, std::vector<Pixel>& out) {
@@ -119,6 +119,7 @@ RasterRun run_raster(Isa isa, const RasterCall& call) {
   options.cull = call.cull;
   options.isa = isa;
   options.statuses = run.statuses;
+  options.samples = call.samples;
   CollectingSink sink(run.tiles);
   run.report = rasterize(call.vertices, call.indices, call.target, options, sink);
   return run;
@@ -215,11 +216,11 @@ std::string describe_call(const RasterCall& call) {
     }
     if (previous != nullptr) {
       const auto order = [](const TileCoverage& t) {
-        return std::tuple(t.triangle, t.tile_y, t.tile_x);
+        return std::tuple(t.triangle, t.tile_y, t.tile_x, t.sample);
       };
       if (!(order(*previous) < order(tile))) {
         return ::testing::AssertionFailure()
-               << "tiles out of order (triangle, then tile_y, then tile_x): " << where.str()
+               << "tiles out of order (triangle, then tile_y, tile_x and sample): " << where.str()
                << " after tile (" << previous->tile_x << ", " << previous->tile_y
                << ") of triangle " << previous->triangle;
       }

@@ -39,6 +39,7 @@ struct RasterCall {
   std::span<const std::uint32_t> indices;  // empty: triangle t is vertices 3t .. 3t+2
   RasterTarget target;
   CullMode cull = CullMode::none;
+  int samples = 1;  // RasterOptions::samples
 
   std::size_t triangle_count() const {
     return (indices.empty() ? vertices.size() : indices.size()) / 3;

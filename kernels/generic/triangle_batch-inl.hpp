@@ -9,6 +9,7 @@
 
 #include "../src/kernel_table.hpp"
 #include "lane_arch-inl.hpp"
+#include "sample_walk-inl.hpp"
 #include "span_walk-inl.hpp"
 #include "tile_walk-inl.hpp"
 
@@ -41,6 +42,27 @@ inline void walk_triangle(const TriangleSetup& setup, Visitor& visitor) {
     walk_tiles<Arch, std::int32_t>(setup, visitor);
   } else {
     walk_tiles<Arch, std::int64_t>(setup, visitor);
+  }
+}
+
+// A visitor of every sample of the batch's pattern (sample_tile), rather than of pixel centres.
+template <class Visitor>
+concept MultisampleVisitor = requires {
+  Visitor::kMultisample;
+};
+
+// walk_triangle(), or the multisample walk for a multisample visitor.
+template <class Visitor>
+inline void walk_visible(const detail::TriangleBatch& batch, const TriangleSetup& setup,
+                         Visitor& visitor) {
+  if constexpr (MultisampleVisitor<Visitor>) {
+    if (setup.narrow) {
+      walk_sample_tiles<Arch, std::int32_t>(setup, batch.samples, visitor);
+    } else {
+      walk_sample_tiles<Arch, std::int64_t>(setup, batch.samples, visitor);
+    }
+  } else {
+    walk_triangle(setup, visitor);
   }
 }
 
@@ -107,6 +129,8 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
   TriangleStatus statuses[kLanes];
   bool visible[kLanes];
   VisibleGroup<Arch> gathered;
+  SampleReach reach;
+  if constexpr (MultisampleVisitor<Visitor>) reach = sample_reach(batch.samples);
   for (std::size_t first = 0; first < batch.triangle_count; first += kLanes) {
     const std::size_t count =
         batch.triangle_count - first < kLanes ? batch.triangle_count - first : kLanes;
@@ -132,7 +156,7 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
       }
     }
     const std::uint32_t visible_lanes =
-        setup_triangles<Arch>(group, batch.clip, batch.cull, setups, statuses, visible);
+        setup_triangles<Arch>(group, batch.clip, batch.cull, setups, statuses, visible, reach);
     // A whole group of visible triangles with none waiting is set up and drawn where it is:
     // gathering pays only where some lanes drop out.
     if constexpr (kGrouped) {
@@ -163,7 +187,7 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
         if (gathered.count == kLanes) gathered.draw(visitor);
       } else {
         visitor.begin_triangle(static_cast<std::uint32_t>(t));
-        walk_triangle(setups[l], visitor);
+        walk_visible(batch, setups[l], visitor);
       }
     }
   }

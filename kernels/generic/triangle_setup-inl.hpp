@@ -28,9 +28,11 @@
 //   the same G in double, exact for the same reason.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 
 #include <xsimd/xsimd.hpp>
 
@@ -41,6 +43,17 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 struct EdgeSetup {
   std::int32_t a, b;  // per-pixel steps of G in x and y
   std::int64_t g;     // G at the sample of pixel (origin_x, origin_y)
+  // (E + bias) - 256 G, in [0, 255]: the same at every pixel centre (E steps by multiples of
+  // 256), so a sample moved from the centre by (sx, sy) fixed-point units has
+  // G + floor((remainder + A sx + B sy) / 256) (sample_walk-inl.hpp).
+  std::int32_t remainder;
+};
+
+// How far a call's samples lie from the pixel centre, in fixed-point units (1/256 px): zero
+// for single-sample calls, the sample pattern's extremes for multisampled ones.
+struct SampleReach {
+  std::int32_t x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+  bool any() const { return x_min != 0 || x_max != 0 || y_min != 0 || y_max != 0; }
 };
 
 struct TriangleSetup {
@@ -91,7 +104,7 @@ struct GroupCorners {
 template <class Arch>
 inline std::uint32_t setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip,
                                      CullMode cull, TriangleSetup* setups, TriangleStatus* statuses,
-                                     bool* visible) {
+                                     bool* visible, const SampleReach& reach = {}) {
   using D = xsimd::batch<double, Arch>;
   static constexpr std::size_t kLanes = kSetupLanes<Arch>;  // static: lambdas may use it
   const auto load = [](const float* v) {
@@ -130,12 +143,13 @@ inline std::uint32_t setup_triangles(const TriangleGroup<Arch>& in, const PixelR
   x[1] = x1;
   y[1] = y1;
 
-  // Pixels whose sample 256 i + 128 lies within [min, max] of the snapped vertices, clipped.
+  // Pixels with a sample 256 i + 128 + s (s within the reach) within [min, max] of the snapped
+  // vertices, clipped: i from ceil((min - 128 - s_max) / 256) to floor((max - 128 - s_min) / 256).
   const D kInvPixel(1.0 / 256.0), kInvTile(1.0 / kTileSize), kTile(kTileSize);
-  const D min_x = xsimd::min(xsimd::min(x[0], x[1]), x[2]);
-  const D max_x = xsimd::max(xsimd::max(x[0], x[1]), x[2]);
-  const D min_y = xsimd::min(xsimd::min(y[0], y[1]), y[2]);
-  const D max_y = xsimd::max(xsimd::max(y[0], y[1]), y[2]);
+  const D min_x = xsimd::min(xsimd::min(x[0], x[1]), x[2]) - D(reach.x_max);
+  const D max_x = xsimd::max(xsimd::max(x[0], x[1]), x[2]) - D(reach.x_min);
+  const D min_y = xsimd::min(xsimd::min(y[0], y[1]), y[2]) - D(reach.y_max);
+  const D max_y = xsimd::max(xsimd::max(y[0], y[1]), y[2]) - D(reach.y_min);
   const D box_x0 = xsimd::max(xsimd::floor((min_x + D(127.0)) * kInvPixel), D(clip.x0));
   const D box_y0 = xsimd::max(xsimd::floor((min_y + D(127.0)) * kInvPixel), D(clip.y0));
   const D box_x1 = xsimd::min(xsimd::floor((max_x - D(128.0)) * kInvPixel) + D(1.0), D(clip.x1));
@@ -154,19 +168,28 @@ inline std::uint32_t setup_triangles(const TriangleGroup<Arch>& in, const PixelR
   const D reach_y = xsimd::floor((box_y1 - D(1.0) - origin_y) * kInvTile) * kTile + D(15.0);
   const D px = origin_x * D(256.0) + D(128.0), py = origin_y * D(256.0) + D(128.0);
 
-  alignas(64) double a[3][kLanes], b[3][kLanes], g[3][kLanes];
+  alignas(64) double a[3][kLanes], b[3][kLanes], g[3][kLanes], remainder[3][kLanes];
   auto narrow = in_band;
+  // A sample off the centre moves G by at most (|A| |s_x| + |B| |s_y|) / 256 + 1.
+  const D sample_x(std::max(std::abs(reach.x_min), std::abs(reach.x_max)));
+  const D sample_y(std::max(std::abs(reach.y_min), std::abs(reach.y_max)));
+  const D sample_slack(reach.any() ? 1.0 : 0.0);
   for (int e = 0; e < 3; ++e) {
     const int i = e, j = e == 2 ? 0 : e + 1;
     const D ea = y[i] - y[j], eb = x[j] - x[i];
     const auto top_left = ea > D(0.0) || (ea == D(0.0) && eb > D(0.0));
     const D bias = xsimd::select(top_left, D(0.0), D(-1.0));
-    const D ge = xsimd::floor((ea * (px - x[i]) + eb * (py - y[i]) + bias) * kInvPixel);
+    const D biased = ea * (px - x[i]) + eb * (py - y[i]) + bias;
+    const D ge = xsimd::floor(biased * kInvPixel);
+    const D sample_shift =
+        (xsimd::abs(ea) * sample_x + xsimd::abs(eb) * sample_y) * kInvPixel + sample_slack;
     narrow = narrow &&
-             xsimd::abs(ge) + xsimd::abs(ea) * reach_x + xsimd::abs(eb) * reach_y <= D(INT32_MAX);
+             xsimd::abs(ge) + xsimd::abs(ea) * reach_x + xsimd::abs(eb) * reach_y + sample_shift <=
+                 D(INT32_MAX);
     ea.store_aligned(a[e]);
     eb.store_aligned(b[e]);
     ge.store_aligned(g[e]);
+    (biased - ge * D(256.0)).store_aligned(remainder[e]);
   }
 
   alignas(64) double box[4][kLanes], origin[2][kLanes], flags[5][kLanes], extents[kLanes];
@@ -206,7 +229,8 @@ inline std::uint32_t setup_triangles(const TriangleGroup<Arch>& in, const PixelR
     TriangleSetup& setup = setups[l];
     for (int e = 0; e < 3; ++e) {
       setup.edge[e] = {static_cast<std::int32_t>(a[e][l]), static_cast<std::int32_t>(b[e][l]),
-                       static_cast<std::int64_t>(g[e][l])};
+                       static_cast<std::int64_t>(g[e][l]),
+                       static_cast<std::int32_t>(remainder[e][l])};
     }
     setup.box = {static_cast<std::int32_t>(box[0][l]), static_cast<std::int32_t>(box[1][l]),
                  static_cast<std::int32_t>(box[2][l]), static_cast<std::int32_t>(box[3][l])};

@@ -2,7 +2,9 @@
 #include "../src/isa_build.hpp"
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "../generic/triangle_batch-inl.hpp"
 #include "../src/isa_kernels.hpp"
@@ -22,15 +24,27 @@ struct CountingVisitor {
   }
 };
 
+// Counts the covered samples of every sample of the pattern.
+struct SampleCountingVisitor {
+  static constexpr bool kMultisample = true;
+  std::uint64_t samples = 0;
+  void begin_triangle(std::uint32_t) {}
+  void sample_tile(std::uint32_t, std::uint32_t, std::span<const std::uint64_t> masks) {
+    for (std::uint64_t mask : masks)
+      samples += static_cast<std::uint64_t>(std::popcount(mask));
+  }
+};
+
 // Buffers tiles and hands them to the sink in batches.
 class BufferingVisitor {
  public:
   explicit BufferingVisitor(CoverageSink& sink) : sink_(sink) {}
   std::uint32_t triangle = 0;
   void begin_triangle(std::uint32_t t) { triangle = t; }
-  void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
+  void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask,
+            std::uint8_t sample = 0) {
     buffer_[count_++] = {triangle, static_cast<std::uint16_t>(tile_x),
-                         static_cast<std::uint16_t>(tile_y), mask};
+                         static_cast<std::uint16_t>(tile_y), mask, sample};
     if (count_ == kCapacity) flush();
   }
   void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
@@ -50,9 +64,27 @@ class BufferingVisitor {
   TileCoverage buffer_[kCapacity];
 };
 
+// BufferingVisitor for every sample of the pattern: a tile's samples in pattern order.
+struct SampleBufferingVisitor : BufferingVisitor {
+  static constexpr bool kMultisample = true;
+  using BufferingVisitor::BufferingVisitor;
+  void sample_tile(std::uint32_t tile_x, std::uint32_t tile_y,
+                   std::span<const std::uint64_t> masks) {
+    for (std::size_t k = 0; k < masks.size(); ++k) {
+      if (masks[k] != 0) tile(tile_x, tile_y, masks[k], static_cast<std::uint8_t>(k));
+    }
+  }
+};
+
 }  // namespace
 
 void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report) {
+  if (batch.samples.size() > 1) {
+    SampleBufferingVisitor visitor(sink);
+    run_batch(batch, visitor, report);
+    visitor.flush();
+    return;
+  }
   BufferingVisitor visitor(sink);
   run_batch(batch, visitor, report);
   visitor.flush();
@@ -60,6 +92,12 @@ void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterRep
 
 void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
                     std::uint64_t& pixels) {
+  if (batch.samples.size() > 1) {
+    SampleCountingVisitor visitor;
+    run_batch(batch, visitor, report);
+    pixels += visitor.samples;
+    return;
+  }
   CountingVisitor visitor;
   run_batch(batch, visitor, report);
   pixels += visitor.pixels;

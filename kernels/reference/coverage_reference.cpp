@@ -109,6 +109,34 @@ void for_each_tile(const SnappedTriangle& t, const PixelRect& clip,
   }
 }
 
+void for_each_sample_tile(
+    const SnappedTriangle& t, const PixelRect& clip, std::span<const SampleOffset> pattern,
+    const std::function<void(std::uint32_t, std::uint32_t, std::uint8_t, std::uint64_t)>& tile) {
+  // Samples lie inside their pixel's square, so the centres' generous box holds them too.
+  const PixelRect box = candidate_pixels(t, clip);
+  if (box.empty()) return;
+  for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
+    for (std::int32_t tx = box.x0 / kTileSize; tx <= (box.x1 - 1) / kTileSize; ++tx) {
+      for (std::size_t k = 0; k < pattern.size(); ++k) {
+        std::uint64_t mask = 0;
+        for (int y = 0; y < kTileSize; ++y) {
+          for (int x = 0; x < kTileSize; ++x) {
+            const std::int32_t px = tx * kTileSize + x, py = ty * kTileSize + y;
+            const bool in_box = px >= box.x0 && px < box.x1 && py >= box.y0 && py < box.y1;
+            if (in_box && covers_sample(t, px, py, pattern[k])) {
+              mask |= std::uint64_t{1} << (y * kTileSize + x);
+            }
+          }
+        }
+        if (mask != 0) {
+          tile(static_cast<std::uint32_t>(tx), static_cast<std::uint32_t>(ty),
+               static_cast<std::uint8_t>(k), mask);
+        }
+      }
+    }
+  }
+}
+
 }  // namespace edgewise::reference
 
 namespace edgewise::reference {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 
 #include "edgewise/coverage.hpp"
 #include "edgewise/multisample.hpp"
@@ -43,6 +44,12 @@ PixelRect candidate_pixels(const SnappedTriangle& tri, const PixelRect& clip);
 // Delivers the triangle's tile masks row by row, as the fast paths do.
 void for_each_tile(const SnappedTriangle& tri, const PixelRect& clip,
                    const std::function<void(std::uint32_t, std::uint32_t, std::uint64_t)>& tile);
+
+// The same for every sample of `pattern`: tile(tile_x, tile_y, sample, mask) for each tile and
+// sample with a covered sample, tiles row by row, samples in pattern order within a tile.
+void for_each_sample_tile(
+    const SnappedTriangle& tri, const PixelRect& clip, std::span<const SampleOffset> pattern,
+    const std::function<void(std::uint32_t, std::uint32_t, std::uint8_t, std::uint64_t)>& tile);
 
 // Validates every triangle of a batch in order, counting statuses into the report (and the
 // batch's status array) as the fast paths do, and calls `triangle` for each drawn one.

@@ -15,24 +15,36 @@
 namespace edgewise::isa_reference {
 namespace {
 
-// Runs the reference over a batch; `tile` receives (triangle, tile_x, tile_y, mask).
+// Runs the reference over a batch; `tile` receives (triangle, tile_x, tile_y, mask, sample):
+// pixel centres (sample 0) or, with a multisample pattern, every sample of it.
 template <class TileFn>
 void run_batch(const detail::TriangleBatch& batch, RasterReport& report, TileFn&& tile) {
   reference::for_each_drawn_triangle(
       batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
+        const auto triangle = static_cast<std::uint32_t>(t);
+        if (batch.samples.size() > 1) {
+          reference::for_each_sample_tile(
+              snapped, batch.clip, batch.samples,
+              [&](std::uint32_t tx, std::uint32_t ty, std::uint8_t sample, std::uint64_t mask) {
+                tile(triangle, tx, ty, mask, sample);
+              });
+          return;
+        }
         reference::for_each_tile(snapped, batch.clip,
                                  [&](std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
-                                   tile(static_cast<std::uint32_t>(t), tx, ty, mask);
+                                   tile(triangle, tx, ty, mask, std::uint8_t{0});
                                  });
       });
 }
 
 void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report) {
   std::vector<TileCoverage> tiles;
-  run_batch(
-      batch, report, [&](std::uint32_t t, std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
-        tiles.push_back({t, static_cast<std::uint16_t>(tx), static_cast<std::uint16_t>(ty), mask});
-      });
+  run_batch(batch, report,
+            [&](std::uint32_t t, std::uint32_t tx, std::uint32_t ty, std::uint64_t mask,
+                std::uint8_t sample) {
+              tiles.push_back({t, static_cast<std::uint16_t>(tx), static_cast<std::uint16_t>(ty),
+                               mask, sample});
+            });
   if (!tiles.empty()) sink.consume(tiles);
 }
 
@@ -43,10 +55,11 @@ void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* 
 
 void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
                     std::uint64_t& pixels) {
-  run_batch(batch, report, [&](std::uint32_t, std::uint32_t, std::uint32_t, std::uint64_t mask) {
-    for (; mask != 0; mask &= mask - 1)
-      ++pixels;  // plain bit counting, no intrinsics
-  });
+  run_batch(batch, report,
+            [&](std::uint32_t, std::uint32_t, std::uint32_t, std::uint64_t mask, std::uint8_t) {
+              for (; mask != 0; mask &= mask - 1)
+                ++pixels;  // plain bit counting, no intrinsics
+            });
 }
 
 Vec4 to_float(const reference::Rgba& rgba) {

@@ -31,13 +31,16 @@ detail::TriangleBatch make_batch(std::span<const Vec2> vertices,
   if (static_cast<int>(options.cull) > static_cast<int>(CullMode::counter_clockwise)) {
     throw std::invalid_argument("unknown cull mode");
   }
+  // standard_sample_pattern() throws for a count without a pattern.
+  const std::span<const SampleOffset> pattern = standard_sample_pattern(options.samples);
   return {vertices.data(),
           vertices.size(),
           indices.empty() ? nullptr : indices.data(),
           triangles,
           clip_rect(target),
           options.cull,
-          options.statuses.empty() ? nullptr : options.statuses.data()};
+          options.statuses.empty() ? nullptr : options.statuses.data(),
+          options.samples > 1 ? pattern : std::span<const SampleOffset>{}};
 }
 
 const detail::KernelTable& chosen_kernels(const RasterOptions& options) {

@@ -5,9 +5,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "edgewise/camera.hpp"
 #include "edgewise/coverage.hpp"
+#include "edgewise/multisample.hpp"
 #include "isa_list.hpp"
 #include "sample_kernels.hpp"
 
@@ -26,6 +28,9 @@ struct TriangleBatch {
   PixelRect clip;
   CullMode cull;
   TriangleStatus* statuses;  // null or triangle_count entries
+  // The multisample pattern (multisample.hpp) of the multisample kernels; the others sample
+  // pixel centres.
+  std::span<const SampleOffset> samples = {};
 };
 
 struct ShadeBatch;

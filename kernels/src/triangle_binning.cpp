@@ -46,7 +46,7 @@ PixelRect BinGrid::rect(std::size_t bin) const {
 }
 
 TriangleStatus classify_triangle(const Vec2 vertices[3], CullMode cull, const PixelRect& clip,
-                                 PixelRect& box) {
+                                 PixelRect& box, std::int32_t sample_reach) {
   // setup_triangles' decisions, one triangle at a time, in its exact arithmetic, without a
   // library call (this runs once per triangle of a binned call; see docs/DESIGN.md, "Threads").
   // Scaling by 256 is exact in double, and |scaled| <= 2^23 fails for NaN and infinity.
@@ -90,10 +90,11 @@ TriangleStatus classify_triangle(const Vec2 vertices[3], CullMode cull, const Pi
   const std::int32_t max_x = std::max({fixed[0], fixed[2], fixed[4]});
   const std::int32_t min_y = std::min({fixed[1], fixed[3], fixed[5]});
   const std::int32_t max_y = std::max({fixed[1], fixed[3], fixed[5]});
-  box.x0 = std::max((min_x + 127) >> kSubpixelBits, clip.x0);
-  box.y0 = std::max((min_y + 127) >> kSubpixelBits, clip.y0);
-  box.x1 = std::min(((max_x - 128) >> kSubpixelBits) + 1, clip.x1);
-  box.y1 = std::min(((max_y - 128) >> kSubpixelBits) + 1, clip.y1);
+  // Samples up to sample_reach from the centre widen it both ways.
+  box.x0 = std::max((min_x + 127 - sample_reach) >> kSubpixelBits, clip.x0);
+  box.y0 = std::max((min_y + 127 - sample_reach) >> kSubpixelBits, clip.y0);
+  box.x1 = std::min(((max_x - 128 + sample_reach) >> kSubpixelBits) + 1, clip.x1);
+  box.y1 = std::min(((max_y - 128 + sample_reach) >> kSubpixelBits) + 1, clip.y1);
   return TriangleStatus::drawn;
 }
 
@@ -197,7 +198,8 @@ void bin_triangles(const TriangleBatch& batch, std::size_t first, std::size_t la
     if (fetch_corners(batch, t, corner)) {
       const Vec2 v[3] = {batch.vertices[corner[0]], batch.vertices[corner[1]],
                          batch.vertices[corner[2]]};
-      status = classify_triangle(v, batch.cull, grid.clip, box);
+      // A multisample pattern reaches at most 8/16 px from the centre: 128 fixed-point units.
+      status = classify_triangle(v, batch.cull, grid.clip, box, batch.samples.size() > 1 ? 128 : 0);
     }
     if (batch.statuses != nullptr) batch.statuses[t] = status;
     if (status != TriangleStatus::drawn) {

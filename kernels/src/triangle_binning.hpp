@@ -37,9 +37,10 @@ inline constexpr std::size_t kBinsPerThread = 8;
 // The status the kernels' setup gives a triangle with these (unsnapped) vertices, computed the
 // same way in double (kernels/generic/triangle_setup-inl.hpp, setup_triangles), and for a drawn
 // triangle its box: the pixels whose samples lie within its snapped bounding box, clipped to
-// `clip` (possibly empty).
+// `clip` (possibly empty). Samples up to `sample_reach` fixed-point units (1/256 px) from the
+// pixel centre widen the box by that much each way.
 TriangleStatus classify_triangle(const Vec2 vertices[3], CullMode cull, const PixelRect& clip,
-                                 PixelRect& box);
+                                 PixelRect& box, std::int32_t sample_reach = 0);
 
 // The corner indices of one bin's triangles from one range, three per triangle, as
 // TriangleBatch::indices takes them. Appending is one capacity check per triangle (binning runs

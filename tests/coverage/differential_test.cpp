@@ -83,18 +83,21 @@ std::optional<PixelRect> batch_scissor(Random& random, const TriangleSource& sou
   return PixelRect{x0, y0, x1, y1};
 }
 
-void run_differential(Isa isa, std::string_view source_name) {
+// `samples` per pixel (RasterOptions::samples) on a `fraction` of the source's share of the
+// budget.
+void run_differential(Isa isa, std::string_view source_name, int samples = 1,
+                      double fraction = 1.0) {
   const TriangleSource& source = source_named(source_name);
   const std::uint64_t budget = env_number("EDGEWISE_FUZZ_ITERS", kDefaultBudget);
   const std::uint64_t seed = env_number("EDGEWISE_FUZZ_SEED", kDefaultSeed);
   const std::uint64_t count =
-      static_cast<std::uint64_t>(static_cast<double>(budget) * source.share);
+      static_cast<std::uint64_t>(static_cast<double>(budget) * source.share * fraction);
   const std::string replay = "EDGEWISE_FUZZ_SEED=" + std::to_string(seed) +
                              " EDGEWISE_FUZZ_ITERS=" + std::to_string(budget) +
                              " edgewise_tests --gtest_filter=Differential." +
                              ::testing::UnitTest::GetInstance()->current_test_info()->name();
   // Each generator has its own stream, independent of the others' shares.
-  Random random(seed ^ name_hash(source.name));
+  Random random(seed ^ name_hash(source.name) ^ static_cast<std::uint64_t>(samples - 1));
 
   std::vector<Vec2> vertices;
   std::vector<std::uint32_t> indices;
@@ -120,7 +123,7 @@ void run_differential(Isa isa, std::string_view source_name) {
     }
     const CullMode culls[] = {CullMode::none, CullMode::none, CullMode::clockwise,
                               CullMode::counter_clockwise};
-    const RasterCall call{vertices, indices, target, culls[random.integer(0, 3)]};
+    const RasterCall call{vertices, indices, target, culls[random.integer(0, 3)], samples};
 
     const RasterRun expected = run_raster(Isa::reference, call);
     const RasterRun actual = run_raster(isa, call);
@@ -142,10 +145,17 @@ void run_differential(Isa isa, std::string_view source_name) {
     EXPECT_GT(drawn, count / 20) << "source " << source.name << " draws almost nothing";
     EXPECT_GT(covered, 0u) << "source " << source.name << " covers nothing";
   }
-  std::printf("[ %-8s ] %s: %" PRIu64 " triangles (%" PRIu64 " drawn, %" PRIu64
+  std::printf("[ %-8s ] %s, %d sample(s): %" PRIu64 " triangles (%" PRIu64 " drawn, %" PRIu64
               " samples covered), seed %" PRIu64 "\n",
-              std::string(name_of(isa)).c_str(), std::string(source.name).c_str(), count, drawn,
-              covered, seed);
+              std::string(name_of(isa)).c_str(), std::string(source.name).c_str(), samples, count,
+              drawn, covered, seed);
+}
+
+// Every sample of the multisample patterns: the reference decides each sample pixel by pixel,
+// so these take a fortieth of each source's budget per pattern.
+void run_multisample_differential(Isa isa, int samples) {
+  for (const TriangleSource& source : triangle_sources())
+    run_differential(isa, source.name, samples, 1.0 / 40.0);
 }
 
 using Differential = IsaTest;
@@ -170,6 +180,18 @@ TEST_P(Differential, Ties) {
 }
 TEST_P(Differential, GuardBand) {
   run_differential(isa(), "guard_band");
+}
+TEST_P(Differential, Multisample2) {
+  run_multisample_differential(isa(), 2);
+}
+TEST_P(Differential, Multisample4) {
+  run_multisample_differential(isa(), 4);
+}
+TEST_P(Differential, Multisample8) {
+  run_multisample_differential(isa(), 8);
+}
+TEST_P(Differential, Multisample16) {
+  run_multisample_differential(isa(), 16);
 }
 
 // The span walk (boxes of 576 pixels or more) orders a triangle's edges by kind: two left and

@@ -56,7 +56,7 @@ struct Counted {
 };
 
 Counted count(Isa isa, const Triangles& triangles, bool indexed, CullMode cull, std::size_t threads,
-              const TaskExecutor& executor = {}) {
+              const TaskExecutor& executor = {}, int samples = 1) {
   Counted out;
   out.statuses.resize((indexed ? triangles.indices.size() : triangles.vertices.size()) / 3);
   RasterOptions options;
@@ -65,6 +65,7 @@ Counted count(Isa isa, const Triangles& triangles, bool indexed, CullMode cull, 
   options.statuses = out.statuses;
   options.threads = threads;
   options.executor = executor;
+  options.samples = samples;
   const RasterTarget target{kWidth, kHeight, PixelRect{5, 3, 990, 597}};
   out.count = count_coverage(triangles.vertices,
                              indexed ? std::span<const std::uint32_t>(triangles.indices)
@@ -111,6 +112,21 @@ TEST_P(CoverageThreads, CountCoverageIsTheSameForEveryThreadCount) {
                     std::to_string(threads) + " threads, indexed " + std::to_string(indexed) +
                         ", cull " + std::string(name_of(cull)));
       }
+    }
+  }
+}
+
+// Binning widens a multisampled triangle's box by the samples' reach: a triangle whose centres
+// miss a bin may still cover samples in it.
+TEST_P(CoverageThreads, MultisampleCountIsTheSameForEveryThreadCount) {
+  const Triangles triangles = isa() == Isa::reference ? random_triangles(23, 2500, 40.0)
+                                                      : random_triangles(23, 5000, 150.0);
+  for (int samples : {4, 16}) {
+    const Counted one = count(isa(), triangles, false, CullMode::none, 1, {}, samples);
+    EXPECT_GT(one.count.pixels, 0u);
+    for (std::size_t threads : {2, 3, 8}) {
+      expect_same(one, count(isa(), triangles, false, CullMode::none, threads, {}, samples),
+                  std::to_string(threads) + " threads, " + std::to_string(samples) + " samples");
     }
   }
 }

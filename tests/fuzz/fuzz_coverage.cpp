@@ -7,7 +7,8 @@
 //   u16 width, u16 height        target size, each modulo 32769
 //   u16 x, u16 y, u8 w, u8 h     scissor window (always within 64 px per side, so the reference
 //                                stays fast even on a 32768 x 32768 target)
-//   u8 flags                     bits 0-1: cull mode (3 = none); bit 2: indexed
+//   u8 flags                     bits 0-1: cull mode (3 = none); bit 2: indexed; bits 3-5:
+//                                samples per pixel, 1 << (value % 5) (1, 2, 4, 8 or 16)
 //   then per triangle (at most 32):
 //     u8 modes                   two bits per vertex: how its coordinates are encoded
 //     3 x (u32 x, u32 y)         0, 1: near the window, 1/65536 px resolution (ties, samples);
@@ -85,7 +86,7 @@ struct Output {
 bool same(const Output& a, const Output& b) {
   const auto same_tile = [](const TileCoverage& x, const TileCoverage& y) {
     return x.triangle == y.triangle && x.tile_x == y.tile_x && x.tile_y == y.tile_y &&
-           x.mask == y.mask;
+           x.mask == y.mask && x.sample == y.sample;
   };
   return a.statuses == b.statuses &&
          std::equal(a.tiles.begin(), a.tiles.end(), b.tiles.begin(), b.tiles.end(), same_tile) &&
@@ -104,15 +105,15 @@ std::uint64_t popcount_of(const std::vector<TileCoverage>& tiles) {
 
 [[noreturn]] void report_mismatch(std::span<const Vec2> vertices,
                                   std::span<const std::uint32_t> indices,
-                                  const RasterTarget& target, CullMode cull,
+                                  const RasterTarget& target, CullMode cull, int samples,
                                   std::span<const Output> outputs) {
   std::fprintf(stderr, "edgewise: ISA outputs differ\ntarget %dx%d", target.width, target.height);
   if (target.scissor) {
     std::fprintf(stderr, ", scissor [%d, %d) x [%d, %d)", target.scissor->x0, target.scissor->x1,
                  target.scissor->y0, target.scissor->y1);
   }
-  std::fprintf(stderr, ", cull %d, %s\n", static_cast<int>(cull),
-               indices.empty() ? "unindexed" : "indexed");
+  std::fprintf(stderr, ", cull %d, %s, %d sample(s) per pixel\n", static_cast<int>(cull),
+               indices.empty() ? "unindexed" : "indexed", samples);
   const std::size_t triangles = outputs.front().statuses.size();
   for (std::size_t t = 0; t < triangles; ++t) {
     std::fprintf(stderr, "triangle %zu:", t);
@@ -146,7 +147,7 @@ std::uint64_t popcount_of(const std::vector<TileCoverage>& tiles) {
                    static_cast<int>(o.statuses[t]));
     std::fprintf(stderr, "\n");
   }
-  std::fprintf(stderr, "tiles (triangle, tile_x, tile_y: mask per ISA):\n");
+  std::fprintf(stderr, "tiles (triangle, tile_x, tile_y, sample: mask per ISA):\n");
   std::size_t longest = 0;
   for (const Output& o : outputs)
     longest = std::max(longest, o.tiles.size());
@@ -154,9 +155,10 @@ std::uint64_t popcount_of(const std::vector<TileCoverage>& tiles) {
     for (const Output& o : outputs) {
       if (i < o.tiles.size()) {
         const TileCoverage& t = o.tiles[i];
-        std::fprintf(stderr, "  %3u %5u %5u %016" PRIx64, t.triangle, t.tile_x, t.tile_y, t.mask);
+        std::fprintf(stderr, "  %3u %5u %5u %2u %016" PRIx64, t.triangle, t.tile_x, t.tile_y,
+                     static_cast<unsigned>(t.sample), t.mask);
       } else {
-        std::fprintf(stderr, "  %33s", "-");
+        std::fprintf(stderr, "  %36s", "-");
       }
     }
     std::fprintf(stderr, "\n");
@@ -180,6 +182,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint32_t flags = in.read(1);
   const CullMode cull = (flags & 3) == 3 ? CullMode::none : static_cast<CullMode>(flags & 3);
   const bool indexed = (flags & 4) != 0;
+  const int samples = 1 << (((flags >> 3) & 7) % 5);
 
   std::vector<Vec2> vertices;
   while (!in.empty() && vertices.size() < 3 * kMaxTriangles) {
@@ -204,6 +207,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.cull = cull;
     options.isa = isa;
     options.statuses = out.statuses;
+    options.samples = samples;
     CollectingSink sink;
     out.report = rasterize(vertices, indices, target, options, sink);
     out.tiles = std::move(sink.tiles);
@@ -211,13 +215,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     out.counted_pixels = count_coverage(vertices, indices, target, options).pixels;
     if (out.report.isa != isa || out.counted_pixels != popcount_of(out.tiles)) {
       outputs.push_back(std::move(out));
-      report_mismatch(vertices, indices, target, cull, outputs);
+      report_mismatch(vertices, indices, target, cull, samples, outputs);
     }
     outputs.push_back(std::move(out));
   }
   // supported_isas() lists the reference first.
   for (const Output& out : outputs) {
-    if (!same(outputs.front(), out)) report_mismatch(vertices, indices, target, cull, outputs);
+    if (!same(outputs.front(), out)) {
+      report_mismatch(vertices, indices, target, cull, samples, outputs);
+    }
   }
   return 0;
 }

@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "edgewise/isa.hpp"
+#include "edgewise/multisample.hpp"
 #include "edgewise/threads.hpp"
 #include "edgewise/vector.hpp"
 #include "edgewise/names.hpp"
@@ -67,6 +68,11 @@ struct RasterOptions {
   // on the calling thread alone; the executor runs the tasks (empty: oneTBB's; threads.hpp).
   std::size_t threads = 0;
   TaskExecutor executor;
+  // Samples per pixel: 1 samples each pixel's centre; 2, 4, 8 or 16 the standard pattern
+  // (multisample.hpp), each sample decided as exactly as a centre. With more than one,
+  // rasterize() delivers a TileCoverage per tile and sample and count_coverage() counts
+  // covered samples. Any other count throws std::invalid_argument.
+  int samples = 1;
 };
 
 struct RasterReport {
@@ -82,11 +88,13 @@ struct RasterReport {
 struct TileCoverage {
   std::uint32_t triangle;  // index of the triangle in the call
   std::uint16_t tile_x, tile_y;
-  std::uint64_t mask;  // never 0
+  std::uint64_t mask;       // never 0
+  std::uint8_t sample = 0;  // the sample the mask is for (RasterOptions::samples > 1)
 };
 
 // Receives tile coverage in triangle order; within a triangle, tiles come row by row
-// (tile_y ascending, then tile_x ascending). Batches are at most a few hundred tiles.
+// (tile_y ascending, then tile_x ascending), and a tile's samples in pattern order. Batches are
+// at most a few hundred tiles.
 class CoverageSink {
  public:
   virtual ~CoverageSink() = default;
@@ -102,7 +110,8 @@ RasterReport rasterize(std::span<const Vec2> vertices, std::span<const std::uint
 
 struct CoverageCount {
   RasterReport report;
-  std::uint64_t pixels = 0;  // covered samples, summed over triangles
+  std::uint64_t pixels =
+      0;  // covered samples (pixel centres, or every sample), summed over triangles
 };
 // Coverage only: the number of covered pixels, without delivering masks.
 CoverageCount count_coverage(std::span<const Vec2> vertices, std::span<const std::uint32_t> indices,
