@@ -36,6 +36,9 @@ constexpr const char* kDescription =
     "prints '<index> <pixel_count> <row>:<first_col>-<last_col> ...': inclusive runs of covered\n"
     "pixels, rows ascending. Culled and invalid triangles print '<index> 0' and are reported on\n"
     "standard error.\n"
+    "--samples N (2, 4, 8 or 16) decides the standard multisample pattern's samples instead of\n"
+    "pixel centres and prints '<index> <pixel_count> <x>:<y>:<mask> ...' per triangle: the pixels\n"
+    "with a covered sample, row by row, each with its samples in hex (bit k for sample k).\n"
     "--compare-isas rasterizes with the reference and every ISA this CPU supports and exits with\n"
     "status 1 if any output differs from the reference's.";
 
@@ -182,6 +185,42 @@ std::string format_runs(std::span<const TileCoverage> tiles, std::uint64_t& pixe
   return std::to_string(pixel_count) + runs;
 }
 
+// '<pixel_count> <x>:<y>:<mask> ...' for one triangle's tiles of every sample, which must be
+// sorted by tile row, then tile column: each pixel with a covered sample and its sample mask.
+std::string format_sample_masks(std::span<const TileCoverage> tiles, std::uint64_t& pixel_count) {
+  std::string pixels;
+  pixel_count = 0;
+  for (std::size_t row_begin = 0; row_begin < tiles.size();) {
+    std::size_t row_end = row_begin;
+    while (row_end < tiles.size() && tiles[row_end].tile_y == tiles[row_begin].tile_y)
+      ++row_end;
+    for (int y = 0; y < kTileSize; ++y) {
+      for (std::size_t t = row_begin; t < row_end;) {
+        // The tile's records, one per sample with a covered sample.
+        std::size_t tile_end = t;
+        while (tile_end < row_end && tiles[tile_end].tile_x == tiles[t].tile_x)
+          ++tile_end;
+        for (int x = 0; x < kTileSize; ++x) {
+          const int bit = y * kTileSize + x;
+          std::uint32_t mask = 0;
+          for (std::size_t r = t; r < tile_end; ++r)
+            mask |= static_cast<std::uint32_t>((tiles[r].mask >> bit) & 1u) << tiles[r].sample;
+          if (mask == 0) continue;
+          char text[64];
+          const int length = std::snprintf(text, sizeof text, " %u:%u:%x",
+                                           std::uint32_t{tiles[t].tile_x} * kTileSize + x,
+                                           std::uint32_t{tiles[t].tile_y} * kTileSize + y, mask);
+          pixels.append(text, static_cast<std::size_t>(length));
+          ++pixel_count;
+        }
+        t = tile_end;
+      }
+    }
+    row_begin = row_end;
+  }
+  return std::to_string(pixel_count) + pixels;
+}
+
 struct TriangleCoverage {
   std::size_t index;
   TriangleStatus status;
@@ -190,12 +229,13 @@ struct TriangleCoverage {
 
 // Rasterizes triangles [first, first + count) of `vertices` with one ISA.
 std::vector<TriangleCoverage> cover(std::span<const Vec2> vertices, std::size_t first,
-                                    std::size_t count, const RasterTarget& target, Isa isa,
-                                    std::uint64_t& pixels) {
+                                    std::size_t count, const RasterTarget& target, int samples,
+                                    Isa isa, std::uint64_t& pixels) {
   std::vector<TriangleStatus> statuses(count);
   RasterOptions options;
   options.isa = isa;
   options.statuses = statuses;
+  options.samples = samples;
   TileCollector collector;
   rasterize(vertices.subspan(3 * first, 3 * count), {}, target, options, collector);
 
@@ -212,8 +252,10 @@ std::vector<TriangleCoverage> cover(std::span<const Vec2> vertices, std::size_t 
     while (next_tile < tiles.size() && tiles[next_tile].triangle == t)
       ++next_tile;
     std::uint64_t triangle_pixels = 0;
-    const std::string runs =
-        format_runs(std::span(tiles).subspan(begin, next_tile - begin), triangle_pixels);
+    const std::span<const TileCoverage> triangle_tiles =
+        std::span(tiles).subspan(begin, next_tile - begin);
+    const std::string runs = samples > 1 ? format_sample_masks(triangle_tiles, triangle_pixels)
+                                         : format_runs(triangle_tiles, triangle_pixels);
     pixels += triangle_pixels;
     result[t] = {first + t, statuses[t], std::to_string(first + t) + ' ' + runs};
   }
@@ -223,13 +265,13 @@ std::vector<TriangleCoverage> cover(std::span<const Vec2> vertices, std::size_t 
 // Bounds memory for large inputs: tiles are kept for one chunk of triangles at a time.
 constexpr std::size_t kChunkTriangles = 256;
 
-void list_coverage(std::span<const Vec2> vertices, const RasterTarget& target, Isa isa,
+void list_coverage(std::span<const Vec2> vertices, const RasterTarget& target, int samples, Isa isa,
                    std::ostream& out) {
   const std::size_t triangles = vertices.size() / 3;
   std::uint64_t pixels = 0;
   for (std::size_t first = 0; first < triangles; first += kChunkTriangles) {
     const std::size_t count = std::min(kChunkTriangles, triangles - first);
-    for (const TriangleCoverage& c : cover(vertices, first, count, target, isa, pixels)) {
+    for (const TriangleCoverage& c : cover(vertices, first, count, target, samples, isa, pixels)) {
       out << c.line << '\n';
       if (c.status != TriangleStatus::drawn) {
         std::cerr << "triangle " << c.index << ": " << describe(c.status) << '\n';
@@ -239,7 +281,7 @@ void list_coverage(std::span<const Vec2> vertices, const RasterTarget& target, I
 }
 
 // Returns whether every supported ISA reproduces the reference's output exactly.
-bool compare_isas(std::span<const Vec2> vertices, const RasterTarget& target) {
+bool compare_isas(std::span<const Vec2> vertices, const RasterTarget& target, int samples) {
   const std::size_t triangles = vertices.size() / 3;
   bool all_equal = true;
   for (Isa isa : supported_isas()) {
@@ -248,8 +290,9 @@ bool compare_isas(std::span<const Vec2> vertices, const RasterTarget& target) {
     std::size_t mismatches = 0;
     for (std::size_t first = 0; first < triangles; first += kChunkTriangles) {
       const std::size_t count = std::min(kChunkTriangles, triangles - first);
-      const auto expected = cover(vertices, first, count, target, Isa::reference, reference_pixels);
-      const auto actual = cover(vertices, first, count, target, isa, pixels);
+      const auto expected =
+          cover(vertices, first, count, target, samples, Isa::reference, reference_pixels);
+      const auto actual = cover(vertices, first, count, target, samples, isa, pixels);
       for (std::size_t t = 0; t < count; ++t) {
         if (expected[t].status == actual[t].status && expected[t].line == actual[t].line) continue;
         if (mismatches++ == 0) {
@@ -265,7 +308,8 @@ bool compare_isas(std::span<const Vec2> vertices, const RasterTarget& target) {
     }
     if (mismatches == 0) {
       std::cout << name_of(isa) << ": identical to the reference on " << triangles << " triangles ("
-                << pixels << " covered pixels)\n";
+                << pixels
+                << (samples > 1 ? " pixels with a covered sample)\n" : " covered pixels)\n");
     } else {
       std::cout << name_of(isa) << ": " << mismatches << " of " << triangles
                 << " triangles differ from the reference\n";
@@ -281,6 +325,7 @@ struct Arguments {
   std::optional<Isa> isa;
   std::optional<std::string> output;
   bool compare = false;
+  int samples = 1;
 };
 
 void add_options(CLI::App& app, Arguments& arguments) {
@@ -297,6 +342,19 @@ void add_options(CLI::App& app, Arguments& arguments) {
   app.add_option("-o", arguments.output, "write the output to FILE")->type_name("FILE");
   app.add_flag("--compare-isas", arguments.compare,
                "compare every supported ISA with the reference");
+  tools::add_parsed_option(
+      app, "--samples", arguments.samples,
+      [](const std::string& text) {
+        const auto samples = static_cast<int>(tools::integer_in("--samples", text, 1, 16));
+        if (!is_standard_sample_count(samples)) {
+          throw tools::UsageError("--samples: " + text +
+                                  " has no standard pattern (1, 2, 4, 8 or 16)");
+        }
+        return samples;
+      },
+      "samples per pixel: 1 (the pixel centre, the default), 2, 4, 8 or 16 (the standard "
+      "multisample patterns)")
+      ->type_name("N");
 }
 
 int run(const Arguments& arguments) {
@@ -314,18 +372,18 @@ int run(const Arguments& arguments) {
     vertices = read_triangles(file, arguments.triangles);
   }
 
-  if (arguments.compare) return compare_isas(vertices, arguments.target) ? 0 : 1;
+  if (arguments.compare) return compare_isas(vertices, arguments.target, arguments.samples) ? 0 : 1;
 
   const Isa isa = tools::tool_isa(arguments.isa);
   if (!arguments.output) {
-    list_coverage(vertices, arguments.target, isa, std::cout);
+    list_coverage(vertices, arguments.target, arguments.samples, isa, std::cout);
     std::cout.flush();
     if (!std::cout) throw InputError("cannot write to standard output");
     return 0;
   }
   std::ofstream out(*arguments.output);
   if (!out) throw InputError(*arguments.output + ": cannot create: " + std::strerror(errno));
-  list_coverage(vertices, arguments.target, isa, out);
+  list_coverage(vertices, arguments.target, arguments.samples, isa, out);
   out.close();
   if (!out) throw InputError(*arguments.output + ": write error");
   return 0;
@@ -335,11 +393,11 @@ int run(const Arguments& arguments) {
 
 int main(int argc, char** argv) {
   Arguments arguments;
-  return tools::run_tool(
-      argc, argv, "edgewise-coverage",
-      {"W H TRIANGLES [--isa NAME | --reference] [-o FILE]", "W H TRIANGLES --compare-isas"},
-      [&arguments](CLI::App& app) {
-        add_options(app, arguments);
-        return [&arguments] { return run(arguments); };
-      });
+  return tools::run_tool(argc, argv, "edgewise-coverage",
+                         {"W H TRIANGLES [--samples N] [--isa NAME | --reference] [-o FILE]",
+                          "W H TRIANGLES [--samples N] --compare-isas"},
+                         [&arguments](CLI::App& app) {
+                           add_options(app, arguments);
+                           return [&arguments] { return run(arguments); };
+                         });
 }
