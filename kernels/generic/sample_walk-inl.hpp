@@ -10,8 +10,10 @@
 // delta is computed in int64; |delta| <= (|A| |sx| + |B| |sy|) / 256 + 1, which
 // setup_triangles adds to the narrow bound when the call has samples off the centre.
 //
-// The walk visits every tile of the (sample-widened) box, row by row, and skips a tile that an
-// edge rejects for every sample: G + delta_max at the tile's extreme sample below zero.
+// The walk visits every tile of the (sample-widened) box, row by row, skips a tile that an edge
+// rejects for every sample (G + delta_max at the tile's extreme sample below zero) and takes
+// whole a tile that every edge accepts for every sample (G + delta_min at its other extreme at
+// least zero).
 #pragma once
 
 #include <cstddef>
@@ -49,22 +51,26 @@ template <class Arch, class Int, class Visitor>
   const std::size_t samples = pattern.size();
   const TileEvaluator<WideArch<Arch>> evaluator(setup);
   Int delta[3][kMaxSamples];
-  Int step_x[3], step_y[3], reject_offset[3];
+  Int step_x[3], step_y[3], reject_offset[3], accept_offset[3];
   for (int e = 0; e < 3; ++e) {
     const EdgeSetup& edge = setup.edge[e];
-    Int most = 0;
+    Int most = 0, least = 0;
     for (std::size_t k = 0; k < samples; ++k) {
       const std::int64_t moved = std::int64_t{edge.remainder} +
                                  std::int64_t{edge.a} * 16 * pattern[k].x +
                                  std::int64_t{edge.b} * 16 * pattern[k].y;
       delta[e][k] = static_cast<Int>(moved >> 8);  // floor division by 256
       most = k == 0 || delta[e][k] > most ? delta[e][k] : most;
+      least = k == 0 || delta[e][k] < least ? delta[e][k] : least;
     }
     step_x[e] = static_cast<Int>(edge.a) * kTileSize;
     step_y[e] = static_cast<Int>(edge.b) * kTileSize;
     // The tile's extreme sample for this edge, moved by the sample that gains the most.
     reject_offset[e] =
         (kTileSize - 1) * ((edge.a > 0 ? edge.a : 0) + (edge.b > 0 ? edge.b : 0)) + most;
+    // The sample least inside: the other extreme, moved by the sample that loses the most.
+    accept_offset[e] =
+        (kTileSize - 1) * ((edge.a < 0 ? edge.a : 0) + (edge.b < 0 ? edge.b : 0)) + least;
   }
   const PixelRect& box = setup.box;
   const std::uint32_t first_tile_x = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
@@ -84,8 +90,14 @@ template <class Arch, class Int, class Visitor>
         const std::uint64_t clip =
             rows & column_bits(box.x0 > tx ? box.x0 - tx : 0,
                                box.x1 - tx < kTileSize ? box.x1 - tx : kTileSize);
+        const bool accepted = (g[0] + accept_offset[0] >= 0) & (g[1] + accept_offset[1] >= 0) &
+                              (g[2] + accept_offset[2] >= 0);
         std::uint64_t any = 0;
-        for (std::size_t k = 0; k < samples; ++k) {
+        for (std::size_t k = 0; k < samples && accepted; ++k) {
+          masks[k] = clip;
+          any = clip;
+        }
+        for (std::size_t k = 0; k < samples && !accepted; ++k) {
           const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0] + delta[0][k]),
                                           clamp_to_tile_range(g[1] + delta[1][k]),
                                           clamp_to_tile_range(g[2] + delta[2][k])};
