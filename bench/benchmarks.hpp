@@ -9,6 +9,10 @@ inline constexpr int kWidth = 1920, kHeight = 1080;
 // Coverage/<isa>/area:<px> for every supported ISA, the reference included.
 void register_coverage_benchmarks();
 
+// Area/<isa>/area:<px>: rasterize_areas() (exact-area coverage) for every supported ISA and the
+// reference (the reference up to 1000 px).
+void register_area_benchmarks();
+
 // Clip/<float32|reference>/<inside|near|guard_band>: clip_triangle() against its reference.
 void register_clip_benchmarks();
 

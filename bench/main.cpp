@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     return edgewise::bench::serve_llvmpipe_peer(edgewise::bench::kPeerChildFd);
 #endif
   edgewise::bench::register_coverage_benchmarks();
+  edgewise::bench::register_area_benchmarks();
   edgewise::bench::register_clip_benchmarks();
   edgewise::bench::register_draw_benchmarks();
 #if defined(EDGEWISE_BENCH_SAMPLING)

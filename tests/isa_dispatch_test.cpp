@@ -24,6 +24,11 @@ class NullSink final : public CoverageSink {
   void consume(std::span<const TileCoverage>) override {}
 };
 
+class NullAreaSink final : public AreaSink {
+ public:
+  void consume(std::span<const AreaTile>) override {}
+};
+
 const std::vector<Vec2> kTriangle = {{0.5f, 0.5f}, {12.0f, 1.0f}, {3.0f, 9.0f}};
 const RasterTarget kTarget{16, 16, {}};
 
@@ -182,6 +187,8 @@ TEST_P(IsaForcing, OptionOverridesTheActiveIsa) {
     NullSink sink;
     EXPECT_EQ(rasterize(kTriangle, {}, kTarget, options, sink).isa, isa());
     EXPECT_EQ(count_coverage(kTriangle, {}, kTarget, options).report.isa, isa());
+    NullAreaSink area_sink;
+    EXPECT_EQ(rasterize_areas(kTriangle, {}, kTarget, options, area_sink).isa, isa());
   }
 }
 
@@ -196,7 +203,8 @@ TEST_P(IsaForcing, KernelTableIsComplete) {
   EXPECT_NE(table.shade, nullptr);
   EXPECT_NE(table.sample, nullptr);
   EXPECT_NE(table.sample_fields, nullptr);
-  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 8,
+  EXPECT_NE(table.rasterize_areas, nullptr);
+  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 9,
                 "a kernel was added to KernelTable: check it here");
 }
 

@@ -51,11 +51,20 @@ concept MultisampleVisitor = requires {
   Visitor::kMultisample;
 };
 
-// walk_triangle(), or the multisample walk for a multisample visitor.
+// A visitor with a walk of its own (walk(setup)), set up with the box of every pixel whose
+// square the triangle's box touches.
+template <class Visitor>
+concept SelfWalkingVisitor = requires {
+  Visitor::kWalksItself;
+};
+
+// walk_triangle(), or the multisample walk for a multisample visitor, or the visitor's own.
 template <class Visitor>
 inline void walk_visible(const detail::TriangleBatch& batch, const TriangleSetup& setup,
                          Visitor& visitor) {
-  if constexpr (MultisampleVisitor<Visitor>) {
+  if constexpr (SelfWalkingVisitor<Visitor>) {
+    visitor.walk(setup);
+  } else if constexpr (MultisampleVisitor<Visitor>) {
     if (setup.narrow) {
       walk_sample_tiles<Arch, std::int32_t>(setup, batch.samples, visitor);
     } else {
@@ -131,6 +140,8 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
   VisibleGroup<Arch> gathered;
   SampleReach reach;
   if constexpr (MultisampleVisitor<Visitor>) reach = sample_reach(batch.samples);
+  // Pixel squares reach half a pixel (128 fixed-point units) from their centres.
+  if constexpr (SelfWalkingVisitor<Visitor>) reach = {-128, 128, -128, 128};
   for (std::size_t first = 0; first < batch.triangle_count; first += kLanes) {
     const std::size_t count =
         batch.triangle_count - first < kLanes ? batch.triangle_count - first : kLanes;

@@ -4,8 +4,11 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cmath>
 #include <span>
+#include <vector>
 
+#include "../generic/pixel_area-inl.hpp"
 #include "../generic/triangle_batch-inl.hpp"
 #include "../src/isa_kernels.hpp"
 
@@ -76,7 +79,54 @@ struct SampleBufferingVisitor : BufferingVisitor {
   }
 };
 
+// The areas of each triangle's pixels (pixel_area-inl.hpp), buffered for the sink.
+class AreaVisitor {
+ public:
+  static constexpr bool kWalksItself = true;
+  AreaVisitor(const detail::TriangleBatch& batch, AreaSink& sink) : batch_(batch), sink_(sink) {}
+  void begin_triangle(std::uint32_t t) { triangle_ = t; }
+  void walk(const TriangleSetup& setup) {
+    AreaTriangle tri;
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t corner = batch_.indices != nullptr
+                                     ? batch_.indices[3 * std::size_t{triangle_} + i]
+                                     : 3 * std::size_t{triangle_} + i;
+      // Snapped as setup_triangles() snaps (the set-up accepted these coordinates).
+      tri.x[i] = static_cast<std::int64_t>(
+          std::nearbyint(static_cast<double>(batch_.vertices[corner].x) * 256.0));
+      tri.y[i] = static_cast<std::int64_t>(
+          std::nearbyint(static_cast<double>(batch_.vertices[corner].y) * 256.0));
+    }
+    const std::int64_t twice_area = (tri.x[1] - tri.x[0]) * (tri.y[2] - tri.y[0]) -
+                                    (tri.y[1] - tri.y[0]) * (tri.x[2] - tri.x[0]);
+    tri.orientation = twice_area > 0 ? -1.0 : 1.0;
+    walk_areas<Arch>(tri, setup.box, row_tiles_, triangle_, [this](const AreaTile& tile) {
+      buffer_[count_++] = tile;
+      if (count_ == kCapacity) flush();
+    });
+  }
+  void flush() {
+    if (count_ != 0) sink_.consume({buffer_, count_});
+    count_ = 0;
+  }
+
+ private:
+  static constexpr std::size_t kCapacity = 32;
+  const detail::TriangleBatch& batch_;
+  AreaSink& sink_;
+  std::uint32_t triangle_ = 0;
+  std::vector<AreaTile> row_tiles_;
+  std::size_t count_ = 0;
+  AreaTile buffer_[kCapacity];
+};
+
 }  // namespace
+
+void rasterize_areas(const detail::TriangleBatch& batch, AreaSink& sink, RasterReport& report) {
+  AreaVisitor visitor(batch, sink);
+  run_batch(batch, visitor, report);
+  visitor.flush();
+}
 
 void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report) {
   if (batch.samples.size() > 1) {

@@ -3,12 +3,14 @@
 // sample_reference), in exact integers or double precision where the result allows it (the
 // vertex stage's float32 results are defined by its scalar operations); sampled values are
 // rounded to float only on the way out.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "../src/kernel_table.hpp"
 #include "coverage_reference.hpp"
+#include "pixel_area_reference.hpp"
 #include "sample_reference.hpp"
 #include "vertex_stage_reference.hpp"
 
@@ -62,6 +64,40 @@ void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
             });
 }
 
+// Every pixel of the triangle's candidate box (widened by a pixel: squares reach half a pixel
+// past their centres) by the exact-area reference, tile by tile in row order.
+void rasterize_areas(const detail::TriangleBatch& batch, AreaSink& sink, RasterReport& report) {
+  std::vector<AreaTile> tiles;
+  reference::for_each_drawn_triangle(
+      batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
+        PixelRect box = reference::candidate_pixels(snapped, batch.clip);
+        box = {std::max(box.x0 - 1, batch.clip.x0), std::max(box.y0 - 1, batch.clip.y0),
+               std::min(box.x1 + 1, batch.clip.x1), std::min(box.y1 + 1, batch.clip.y1)};
+        if (box.empty()) return;
+        for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
+          for (std::int32_t tx = box.x0 / kTileSize; tx <= (box.x1 - 1) / kTileSize; ++tx) {
+            AreaTile tile{static_cast<std::uint32_t>(t),
+                          static_cast<std::uint16_t>(tx),
+                          static_cast<std::uint16_t>(ty),
+                          0,
+                          {}};
+            for (int bit = 0; bit < kTileSize * kTileSize; ++bit) {
+              const std::int32_t px = tx * kTileSize + bit % kTileSize;
+              const std::int32_t py = ty * kTileSize + bit / kTileSize;
+              if (px < box.x0 || px >= box.x1 || py < box.y0 || py >= box.y1) continue;
+              const double area = reference::pixel_area(snapped, px, py);
+              if (area > 0.0) {
+                tile.mask |= std::uint64_t{1} << bit;
+                tile.area[bit] = static_cast<float>(area);
+              }
+            }
+            if (tile.mask != 0) tiles.push_back(tile);
+          }
+        }
+      });
+  if (!tiles.empty()) sink.consume(tiles);
+}
+
 Vec4 to_float(const reference::Rgba& rgba) {
   return {static_cast<float>(rgba[0]), static_cast<float>(rgba[1]), static_cast<float>(rgba[2]),
           static_cast<float>(rgba[3])};
@@ -97,7 +133,8 @@ const detail::KernelTable& kernel_table() {
                                              &reference::map_to_screen,
                                              &reference::shade,
                                              &sample,
-                                             &sample_fields};
+                                             &sample_fields,
+                                             &rasterize_areas};
   return table;
 }
 

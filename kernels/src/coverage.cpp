@@ -1,6 +1,7 @@
 // Public raster entry points: argument checks, then the chosen ISA's kernels; count_coverage()
 // in screen bins on several threads when asked (docs/DESIGN.md, "Threads").
 #include "edgewise/coverage.hpp"
+#include "edgewise/pixel_area.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -134,6 +135,19 @@ RasterReport rasterize(std::span<const Vec2> vertices, std::span<const std::uint
   RasterReport report;
   report.isa = kernels.isa;
   kernels.rasterize(batch, sink, report);
+  return report;
+}
+
+RasterReport rasterize_areas(std::span<const Vec2> vertices, std::span<const std::uint32_t> indices,
+                             const RasterTarget& target, const RasterOptions& options,
+                             AreaSink& sink) {
+  RasterOptions centres = options;
+  centres.samples = 1;  // areas have no samples
+  const detail::TriangleBatch batch = make_batch(vertices, indices, target, centres);
+  const detail::KernelTable& kernels = chosen_kernels(options);
+  RasterReport report;
+  report.isa = kernels.isa;
+  kernels.rasterize_areas(batch, sink, report);
   return report;
 }
 

@@ -15,6 +15,7 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report);
 void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
                     std::uint64_t& pixels);
+void rasterize_areas(const detail::TriangleBatch& batch, AreaSink& sink, RasterReport& report);
 
 // draw.cpp
 void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);

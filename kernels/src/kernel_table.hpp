@@ -10,6 +10,7 @@
 #include "edgewise/camera.hpp"
 #include "edgewise/coverage.hpp"
 #include "edgewise/multisample.hpp"
+#include "edgewise/pixel_area.hpp"
 #include "isa_list.hpp"
 #include "sample_kernels.hpp"
 
@@ -54,6 +55,8 @@ struct KernelTable {
   // Sampling (sample.hpp): queries and results as records, or as one array per field.
   SampleKernel sample;
   SampleFieldsKernel sample_fields;
+  // Exact-area coverage (pixel_area.hpp): each triangle's pixel areas to a sink.
+  void (*rasterize_areas)(const TriangleBatch& batch, AreaSink& sink, RasterReport& report);
 };
 
 // The table of a compiled ISA (isa_supported() is the caller's to check).

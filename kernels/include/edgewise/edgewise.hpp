@@ -7,6 +7,7 @@
 #include "edgewise/isa.hpp"
 #include "edgewise/coverage.hpp"
 #include "edgewise/multisample.hpp"
+#include "edgewise/pixel_area.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
