@@ -29,6 +29,7 @@
 #include <xsimd/xsimd.hpp>
 
 #include "edgewise/pixel_area.hpp"
+#include "tile_masks-inl.hpp"
 #include "triangle_setup-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
@@ -167,17 +168,45 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
       tile.mask |= std::uint64_t{1} << bit;
       tile.area[bit] = area;
     };
+    // Pixels [x_begin, x_end) of row y lie wholly inside.
+    const auto fill_whole = [&](std::int32_t y, std::int32_t x_begin, std::int32_t x_end) {
+      const int row = y % kTileSize;
+      for (std::int32_t x = x_begin; x < x_end;) {
+        const std::int32_t tile_left = x - x % kTileSize;
+        const std::int32_t stop = tile_left + kTileSize < x_end ? tile_left + kTileSize : x_end;
+        AreaTile& tile = row_tiles[static_cast<std::size_t>(tile_left / kTileSize - first_tile_x)];
+        tile.mask |= (column_bits(x - tile_left, stop - tile_left) & 0xFFu) << (kTileSize * row);
+        for (std::int32_t c = x - tile_left; c < stop - tile_left; ++c)
+          tile.area[row * kTileSize + c] = 1.0f;
+        x = stop;
+      }
+    };
     const std::int32_t y_end = (ty + 1) * kTileSize < box.y1 ? (ty + 1) * kTileSize : box.y1;
     for (std::int32_t y = ty * kTileSize > box.y0 ? ty * kTileSize : box.y0; y < y_end; ++y) {
       const BandRanges ranges = band_ranges(tri, y);
       if (ranges.count == 0) continue;
-      std::int32_t span_begin = ranges.begin[0], span_end = ranges.end[0];
-      for (int r = 1; r < ranges.count; ++r) {
+      // The candidates as disjoint runs in x order, clipped to the box; between the first and
+      // the last, the gaps are whole pixels.
+      std::int32_t begin[3], end[3];
+      int runs = 0;
+      std::int32_t span_begin = box.x1, span_end = box.x0;
+      for (int r = 0; r < ranges.count; ++r) {
+        const std::int32_t b = ranges.begin[r] < box.x0 ? box.x0 : ranges.begin[r];
+        const std::int32_t e = ranges.end[r] > box.x1 ? box.x1 : ranges.end[r];
         span_begin = ranges.begin[r] < span_begin ? ranges.begin[r] : span_begin;
         span_end = ranges.end[r] > span_end ? ranges.end[r] : span_end;
+        if (b >= e) continue;
+        int at = runs++;
+        for (; at > 0 && begin[at - 1] > b; --at) {
+          begin[at] = begin[at - 1];
+          end[at] = end[at - 1];
+        }
+        begin[at] = b;
+        end[at] = e;
       }
       span_begin = span_begin < box.x0 ? box.x0 : span_begin;
       span_end = span_end > box.x1 ? box.x1 : span_end;
+      std::int32_t covered_to = span_begin;  // pixels below this are decided
       alignas(64) std::int32_t pending[kLanes];
       float areas[kLanes];
       std::size_t waiting = 0;
@@ -187,17 +216,15 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
           set(pending[l], y, areas[l]);
         waiting = 0;
       };
-      for (std::int32_t x = span_begin; x < span_end; ++x) {
-        bool candidate = false;
-        for (int r = 0; r < ranges.count; ++r)
-          candidate = candidate || (x >= ranges.begin[r] && x < ranges.end[r]);
-        if (!candidate) {
-          set(x, y, 1.0f);
-          continue;
+      for (int r = 0; r < runs; ++r) {
+        if (begin[r] > covered_to) fill_whole(y, covered_to, begin[r]);
+        for (std::int32_t x = begin[r] > covered_to ? begin[r] : covered_to; x < end[r]; ++x) {
+          pending[waiting++] = x;
+          if (waiting == kLanes) flush();
         }
-        pending[waiting++] = x;
-        if (waiting == kLanes) flush();
+        covered_to = end[r] > covered_to ? end[r] : covered_to;
       }
+      if (span_end > covered_to) fill_whole(y, covered_to, span_end);
       if (waiting != 0) flush();
     }
     for (const AreaTile& tile : row_tiles) {
