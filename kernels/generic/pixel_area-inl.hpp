@@ -59,25 +59,27 @@ class AreaBatch {
     }
   }
 
-  // Areas of pixels (x[l], y) for the lanes l < count; `x` holds kLanes entries.
-  void areas(const std::int32_t* x, std::int32_t y, float* out, std::size_t count) const {
-    alignas(64) double corner_x[kLanes];
-    for (std::size_t l = 0; l < kLanes; ++l)
+  // Areas of pixels (x[l], y[l]) for the lanes l < count; `x` and `y` hold kLanes entries.
+  void areas(const std::int32_t* x, const std::int32_t* y, float* out, std::size_t count) const {
+    alignas(64) double corner_x[kLanes], corner_y[kLanes];
+    for (std::size_t l = 0; l < kLanes; ++l) {
       corner_x[l] = 256.0 * static_cast<double>(x[l < count ? l : 0]);
+      corner_y[l] = 256.0 * static_cast<double>(y[l < count ? l : 0]);
+    }
     const Doubles cx = Doubles::load_aligned(corner_x);
-    const double cy = 256.0 * static_cast<double>(y);
+    const Doubles cy = Doubles::load_aligned(corner_y);
     const Doubles zero(0.0), one(1.0), inv(1.0 / 256.0);
     Doubles sum(0.0);
     for (int e = 0; e < 3; ++e) {
       // The edge's ends in the pixel's frame, in pixels: exact (multiples of 1/256 below 2^17).
       const Doubles p_x = (Doubles(px_[e]) - cx) * inv;
       const Doubles q_x = (Doubles(qx_[e]) - cx) * inv;
-      const double p_y = (py_[e] - cy) / 256.0;
+      const Doubles p_y = (Doubles(py_[e]) - cy) * inv;
       const Doubles xs = xsimd::min(xsimd::max(p_x, zero), one);
       const Doubles xe = xsimd::min(xsimd::max(q_x, zero), one);
       const Doubles slope(slope_[e]);
-      const Doubles ys = Doubles(p_y) + (xs - p_x) * slope;
-      const Doubles ye = Doubles(p_y) + (xe - p_x) * slope;
+      const Doubles ys = p_y + (xs - p_x) * slope;
+      const Doubles ye = p_y + (xe - p_x) * slope;
       const Doubles p = xsimd::min(ys, ye), q = xsimd::max(ys, ye);
       const Doubles pc = xsimd::min(xsimd::max(p, zero), one);
       const Doubles qc = xsimd::min(xsimd::max(q, zero), one);
@@ -181,6 +183,16 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
         x = stop;
       }
     };
+    // Candidates wait for a whole batch of lanes, across the tile row's pixel rows.
+    alignas(64) std::int32_t pending_x[kLanes], pending_y[kLanes];
+    float areas[kLanes];
+    std::size_t waiting = 0;
+    const auto flush = [&] {
+      batch.areas(pending_x, pending_y, areas, waiting);
+      for (std::size_t l = 0; l < waiting; ++l)
+        set(pending_x[l], pending_y[l], areas[l]);
+      waiting = 0;
+    };
     const std::int32_t y_end = (ty + 1) * kTileSize < box.y1 ? (ty + 1) * kTileSize : box.y1;
     for (std::int32_t y = ty * kTileSize > box.y0 ? ty * kTileSize : box.y0; y < y_end; ++y) {
       const BandRanges ranges = band_ranges(tri, y);
@@ -207,26 +219,18 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
       span_begin = span_begin < box.x0 ? box.x0 : span_begin;
       span_end = span_end > box.x1 ? box.x1 : span_end;
       std::int32_t covered_to = span_begin;  // pixels below this are decided
-      alignas(64) std::int32_t pending[kLanes];
-      float areas[kLanes];
-      std::size_t waiting = 0;
-      const auto flush = [&] {
-        batch.areas(pending, y, areas, waiting);
-        for (std::size_t l = 0; l < waiting; ++l)
-          set(pending[l], y, areas[l]);
-        waiting = 0;
-      };
       for (int r = 0; r < runs; ++r) {
         if (begin[r] > covered_to) fill_whole(y, covered_to, begin[r]);
         for (std::int32_t x = begin[r] > covered_to ? begin[r] : covered_to; x < end[r]; ++x) {
-          pending[waiting++] = x;
+          pending_x[waiting] = x;
+          pending_y[waiting++] = y;
           if (waiting == kLanes) flush();
         }
         covered_to = end[r] > covered_to ? end[r] : covered_to;
       }
       if (span_end > covered_to) fill_whole(y, covered_to, span_end);
-      if (waiting != 0) flush();
     }
+    if (waiting != 0) flush();
     for (const AreaTile& tile : row_tiles) {
       if (tile.mask != 0) emit(tile);
     }
