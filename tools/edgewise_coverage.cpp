@@ -12,6 +12,8 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <utility>
+#include <map>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -39,6 +41,11 @@ constexpr const char* kDescription =
     "--samples N (2, 4, 8 or 16) decides the standard multisample pattern's samples instead of\n"
     "pixel centres and prints '<index> <pixel_count> <x>:<y>:<mask> ...' per triangle: the pixels\n"
     "with a covered sample, row by row, each with its samples in hex (bit k for sample k).\n"
+    "--area prints '<index> <pixel_count> <x>:<y>:<area> ...' per triangle: the area of each "
+    "pixel\n"
+    "the triangle covers in part, in square pixels (9 significant digits), row by row; pixels\n"
+    "of zero area are left out. With --compare-isas, areas may differ from the reference's by the\n"
+    "stated tolerance (1e-6).\n"
     "--compare-isas rasterizes with the reference and every ISA this CPU supports and exits with\n"
     "status 1 if any output differs from the reference's.";
 
@@ -221,6 +228,68 @@ std::string format_sample_masks(std::span<const TileCoverage> tiles, std::uint64
   return std::to_string(pixel_count) + pixels;
 }
 
+class AreaCollector final : public AreaSink {
+ public:
+  void consume(std::span<const AreaTile> tiles) override {
+    tiles_.insert(tiles_.end(), tiles.begin(), tiles.end());
+  }
+  std::vector<AreaTile>& tiles() { return tiles_; }
+
+ private:
+  std::vector<AreaTile> tiles_;
+};
+
+// Calls pixel(x, y, area) for each pixel of a triangle's area tiles (in row order), row by row.
+template <class Pixel>
+void for_each_area_pixel(std::span<const AreaTile> tiles, Pixel&& pixel) {
+  for (std::size_t row_begin = 0; row_begin < tiles.size();) {
+    std::size_t row_end = row_begin;
+    while (row_end < tiles.size() && tiles[row_end].tile_y == tiles[row_begin].tile_y)
+      ++row_end;
+    for (int y = 0; y < kTileSize; ++y) {
+      for (std::size_t t = row_begin; t < row_end; ++t) {
+        for (int x = 0; x < kTileSize; ++x) {
+          const int bit = y * kTileSize + x;
+          if ((tiles[t].mask >> bit & 1u) == 0) continue;
+          pixel(std::uint32_t{tiles[t].tile_x} * kTileSize + x,
+                std::uint32_t{tiles[t].tile_y} * kTileSize + y, tiles[t].area[bit]);
+        }
+      }
+    }
+    row_begin = row_end;
+  }
+}
+
+// '<pixel_count> <x>:<y>:<area> ...' for one triangle's area tiles.
+std::string format_areas(std::span<const AreaTile> tiles, std::uint64_t& pixel_count) {
+  std::string pixels;
+  pixel_count = 0;
+  for_each_area_pixel(tiles, [&](std::uint32_t x, std::uint32_t y, float area) {
+    char text[64];
+    const int length =
+        std::snprintf(text, sizeof text, " %u:%u:%.9g", x, y, static_cast<double>(area));
+    pixels.append(text, static_cast<std::size_t>(length));
+    ++pixel_count;
+  });
+  return std::to_string(pixel_count) + pixels;
+}
+
+// Each triangle's area tiles for triangles [first, first + count) with one ISA; statuses too.
+std::vector<std::vector<AreaTile>> areas_of(std::span<const Vec2> vertices, std::size_t first,
+                                            std::size_t count, const RasterTarget& target, Isa isa,
+                                            std::vector<TriangleStatus>& statuses) {
+  statuses.assign(count, TriangleStatus::drawn);
+  RasterOptions options;
+  options.isa = isa;
+  options.statuses = statuses;
+  AreaCollector collector;
+  rasterize_areas(vertices.subspan(3 * first, 3 * count), {}, target, options, collector);
+  std::vector<std::vector<AreaTile>> per_triangle(count);
+  for (const AreaTile& tile : collector.tiles())
+    per_triangle[tile.triangle].push_back(tile);
+  return per_triangle;
+}
+
 struct TriangleCoverage {
   std::size_t index;
   TriangleStatus status;
@@ -271,6 +340,18 @@ void list_coverage(std::span<const Vec2> vertices, const RasterTarget& target, i
   std::uint64_t pixels = 0;
   for (std::size_t first = 0; first < triangles; first += kChunkTriangles) {
     const std::size_t count = std::min(kChunkTriangles, triangles - first);
+    if (samples == 0) {  // --area
+      std::vector<TriangleStatus> statuses;
+      const auto areas = areas_of(vertices, first, count, target, isa, statuses);
+      for (std::size_t t = 0; t < count; ++t) {
+        std::uint64_t triangle_pixels = 0;
+        out << first + t << ' ' << format_areas(areas[t], triangle_pixels) << '\n';
+        if (statuses[t] != TriangleStatus::drawn) {
+          std::cerr << "triangle " << first + t << ": " << describe(statuses[t]) << '\n';
+        }
+      }
+      continue;
+    }
     for (const TriangleCoverage& c : cover(vertices, first, count, target, samples, isa, pixels)) {
       out << c.line << '\n';
       if (c.status != TriangleStatus::drawn) {
@@ -319,6 +400,61 @@ bool compare_isas(std::span<const Vec2> vertices, const RasterTarget& target, in
   return all_equal;
 }
 
+// Whether every supported ISA's areas lie within the tolerance of the reference's (which is
+// within 2^-44 of exact), pixel by pixel, with the same statuses.
+bool compare_isas_areas(std::span<const Vec2> vertices, const RasterTarget& target) {
+  const std::size_t triangles = vertices.size() / 3;
+  const double tolerance = kPixelAreaTolerance + 0x1p-44;
+  bool all_close = true;
+  for (Isa isa : supported_isas()) {
+    if (isa == Isa::reference) continue;
+    std::size_t mismatches = 0;
+    double worst = 0.0;
+    std::uint64_t pixels = 0;
+    for (std::size_t first = 0; first < triangles; first += kChunkTriangles) {
+      const std::size_t count = std::min(kChunkTriangles, triangles - first);
+      std::vector<TriangleStatus> expected_statuses, actual_statuses;
+      const auto expected =
+          areas_of(vertices, first, count, target, Isa::reference, expected_statuses);
+      const auto actual = areas_of(vertices, first, count, target, isa, actual_statuses);
+      for (std::size_t t = 0; t < count; ++t) {
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, double>> both;
+        for_each_area_pixel(expected[t], [&](std::uint32_t x, std::uint32_t y, float area) {
+          both[{y, x}].first = area;
+        });
+        for_each_area_pixel(actual[t], [&](std::uint32_t x, std::uint32_t y, float area) {
+          both[{y, x}].second = area;
+        });
+        double largest = 0.0;
+        for (const auto& [pixel, areas] : both)
+          largest = std::max(largest, std::abs(areas.first - areas.second));
+        pixels += both.size();
+        worst = std::max(worst, largest);
+        if (largest <= tolerance && expected_statuses[t] == actual_statuses[t]) continue;
+        if (mismatches++ == 0) {
+          const Vec2* v = &vertices[3 * (first + t)];
+          std::cout << std::setprecision(9) << name_of(isa)
+                    << ": differs from the reference by more than the tolerance on triangle "
+                    << first + t << " (" << v[0].x << ' ' << v[0].y << ' ' << v[1].x << ' '
+                    << v[1].y << ' ' << v[2].x << ' ' << v[2].y << "): by " << largest << " ["
+                    << describe(expected_statuses[t]) << " / " << describe(actual_statuses[t])
+                    << "]\n";
+        }
+      }
+    }
+    if (mismatches == 0) {
+      std::cout << name_of(isa) << ": within " << kPixelAreaTolerance << " of the reference on "
+                << triangles << " triangles (" << pixels << " pixels, largest difference " << worst
+                << ")\n";
+    } else {
+      std::cout << name_of(isa) << ": " << mismatches << " of " << triangles
+                << " triangles differ from the reference\n";
+      all_close = false;
+    }
+  }
+  return all_close;
+}
+
 struct Arguments {
   RasterTarget target;
   std::string triangles;
@@ -326,6 +462,7 @@ struct Arguments {
   std::optional<std::string> output;
   bool compare = false;
   int samples = 1;
+  bool area = false;
 };
 
 void add_options(CLI::App& app, Arguments& arguments) {
@@ -355,6 +492,8 @@ void add_options(CLI::App& app, Arguments& arguments) {
       "samples per pixel: 1 (the pixel centre, the default), 2, 4, 8 or 16 (the standard "
       "multisample patterns)")
       ->type_name("N");
+  app.add_flag("--area", arguments.area,
+               "print each pixel's exact area inside the triangle instead of covered samples");
 }
 
 int run(const Arguments& arguments) {
@@ -372,18 +511,25 @@ int run(const Arguments& arguments) {
     vertices = read_triangles(file, arguments.triangles);
   }
 
+  if (arguments.area && arguments.samples > 1) {
+    throw tools::UsageError("--area takes no --samples");
+  }
+  if (arguments.compare && arguments.area) {
+    return compare_isas_areas(vertices, arguments.target) ? 0 : 1;
+  }
   if (arguments.compare) return compare_isas(vertices, arguments.target, arguments.samples) ? 0 : 1;
 
   const Isa isa = tools::tool_isa(arguments.isa);
   if (!arguments.output) {
-    list_coverage(vertices, arguments.target, arguments.samples, isa, std::cout);
+    list_coverage(vertices, arguments.target, arguments.area ? 0 : arguments.samples, isa,
+                  std::cout);
     std::cout.flush();
     if (!std::cout) throw InputError("cannot write to standard output");
     return 0;
   }
   std::ofstream out(*arguments.output);
   if (!out) throw InputError(*arguments.output + ": cannot create: " + std::strerror(errno));
-  list_coverage(vertices, arguments.target, arguments.samples, isa, out);
+  list_coverage(vertices, arguments.target, arguments.area ? 0 : arguments.samples, isa, out);
   out.close();
   if (!out) throw InputError(*arguments.output + ": write error");
   return 0;
@@ -393,11 +539,12 @@ int run(const Arguments& arguments) {
 
 int main(int argc, char** argv) {
   Arguments arguments;
-  return tools::run_tool(argc, argv, "edgewise-coverage",
-                         {"W H TRIANGLES [--samples N] [--isa NAME | --reference] [-o FILE]",
-                          "W H TRIANGLES [--samples N] --compare-isas"},
-                         [&arguments](CLI::App& app) {
-                           add_options(app, arguments);
-                           return [&arguments] { return run(arguments); };
-                         });
+  return tools::run_tool(
+      argc, argv, "edgewise-coverage",
+      {"W H TRIANGLES [--samples N | --area] [--isa NAME | --reference] [-o FILE]",
+       "W H TRIANGLES [--samples N | --area] --compare-isas"},
+      [&arguments](CLI::App& app) {
+        add_options(app, arguments);
+        return [&arguments] { return run(arguments); };
+      });
 }
