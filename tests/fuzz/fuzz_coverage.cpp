@@ -1,7 +1,8 @@
 // Differential fuzz target: the input bytes become a target, a scissor, a cull mode and a
 // batch of triangles; every supported ISA and the scalar reference rasterize it, and any
 // difference in tiles, statuses, report counts or pixel counts prints every ISA's output side
-// by side and aborts.
+// by side and aborts. Exact areas (rasterize_areas()) are compared too: every ISA's within the
+// tolerance of the reference's at every pixel.
 //
 // Input layout (missing bytes read as zero):
 //   u16 width, u16 height        target size, each modulo 32769
@@ -21,7 +22,10 @@
 #include <cinttypes>
 #include <cstdint>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
+#include <map>
+#include <tuple>
 #include <span>
 #include <string>
 #include <vector>
@@ -166,6 +170,57 @@ std::uint64_t popcount_of(const std::vector<TileCoverage>& tiles) {
   std::abort();
 }
 
+class AreaCollector final : public AreaSink {
+ public:
+  void consume(std::span<const AreaTile> batch) override {
+    tiles.insert(tiles.end(), batch.begin(), batch.end());
+  }
+  std::vector<AreaTile> tiles;
+};
+
+// Each pixel's area, keyed by (triangle, y, x).
+std::map<std::tuple<std::uint32_t, std::int32_t, std::int32_t>, double> areas_of(
+    Isa isa, std::span<const Vec2> vertices, std::span<const std::uint32_t> indices,
+    const RasterTarget& target, CullMode cull) {
+  RasterOptions options;
+  options.cull = cull;
+  options.isa = isa;
+  AreaCollector sink;
+  rasterize_areas(vertices, indices, target, options, sink);
+  std::map<std::tuple<std::uint32_t, std::int32_t, std::int32_t>, double> areas;
+  for (const AreaTile& tile : sink.tiles) {
+    for (int bit = 0; bit < 64; ++bit) {
+      if ((tile.mask >> bit & 1u) == 0) continue;
+      areas[{tile.triangle, tile.tile_y * 8 + bit / 8, tile.tile_x * 8 + bit % 8}] = tile.area[bit];
+    }
+  }
+  return areas;
+}
+
+// Aborts when an ISA's area of some pixel is off the reference's by more than the tolerance.
+void compare_areas(std::span<const Vec2> vertices, std::span<const std::uint32_t> indices,
+                   const RasterTarget& target, CullMode cull) {
+  const auto expected = areas_of(Isa::reference, vertices, indices, target, cull);
+  const double tolerance = kPixelAreaTolerance + 0x1p-44;
+  for (Isa isa : supported_isas()) {
+    if (isa == Isa::reference) continue;
+    auto actual = areas_of(isa, vertices, indices, target, cull);
+    for (const auto& [pixel, area] : expected)
+      actual.try_emplace(pixel, 0.0);
+    for (const auto& [pixel, area] : actual) {
+      const auto found = expected.find(pixel);
+      const double want = found == expected.end() ? 0.0 : found->second;
+      if (std::abs(area - want) <= tolerance) continue;
+      std::fprintf(stderr,
+                   "edgewise: %s's area of pixel (%d, %d) of triangle %u is %.9g, the "
+                   "reference's %.9g\n",
+                   std::string(name_of(isa)).c_str(), std::get<2>(pixel), std::get<1>(pixel),
+                   std::get<0>(pixel), area, want);
+      std::abort();
+    }
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -225,5 +280,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       report_mismatch(vertices, indices, target, cull, samples, outputs);
     }
   }
+  compare_areas(vertices, indices, target, cull);
   return 0;
 }
