@@ -147,6 +147,25 @@ template <class Arch>
   }
 }
 
+// The lanes of an int32 comparison as int32 lanes, all ones where it holds.
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<std::int32_t, Arch> mask_lanes(
+    xsimd::batch_bool<std::int32_t, Arch> mask) {
+#if defined(__aarch64__)
+  if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vreinterpretq_s32_u32(mask);
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch> || std::is_base_of_v<xsimd::avx, Arch>) {
+    return typename xsimd::batch<std::int32_t, Arch>::register_type(mask);  // the same register
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "mask_lanes: no implementation for this architecture");
+  }
+}
+
 // a / b, correctly rounded as the scalar division is. (xsimd 8.1 divides float batches on
 // AArch64 by a reciprocal estimate refined by Newton steps, which can differ in the last bit.)
 template <class Arch>
@@ -217,35 +236,56 @@ inline std::uint64_t sign_bits_8x8(const xsimd::batch<std::int32_t, Arch>* rows)
   }
 }
 
-// Eight values held as double batches, converted (exact integers in int32 range) to int32
-// batches: rows[8 / double lanes] -> out[8 / int32 lanes].
+// The smallest and the largest of the lanes of an int32 batch, by halving.
 template <class Arch>
-inline void to_int32_rows(const xsimd::batch<double, Arch>* rows,
-                          xsimd::batch<std::int32_t, Arch>* out) {
+inline std::int32_t lane_min(xsimd::batch<std::int32_t, Arch> v) {
 #if defined(__AVX2__)
   if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    out[0] = _mm256_set_m128i(_mm256_cvttpd_epi32(rows[1]), _mm256_cvttpd_epi32(rows[0]));
-    return;
+    __m128i m = _mm_min_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+    m = _mm_min_epi32(m, _mm_shuffle_epi32(m, 0x4E));
+    return _mm_cvtsi128_si32(_mm_min_epi32(m, _mm_shuffle_epi32(m, 0xB1)));
   } else
 #endif
 #if defined(__SSE2__)
       if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
-    out[0] = _mm_unpacklo_epi64(_mm_cvttpd_epi32(rows[0]), _mm_cvttpd_epi32(rows[1]));
-    out[1] = _mm_unpacklo_epi64(_mm_cvttpd_epi32(rows[2]), _mm_cvttpd_epi32(rows[3]));
-    return;
+    using Ints = xsimd::batch<std::int32_t, Arch>;
+    const Ints m = xsimd::min(v, Ints(_mm_shuffle_epi32(v, 0x4E)));
+    return _mm_cvtsi128_si32(xsimd::min(m, Ints(_mm_shuffle_epi32(m, 0xB1))));
   } else
 #endif
 #if defined(__aarch64__)
       if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
-    for (int i = 0; i < 2; ++i) {
-      out[i] = vcombine_s32(vmovn_s64(vcvtq_s64_f64(rows[2 * i])),
-                            vmovn_s64(vcvtq_s64_f64(rows[2 * i + 1])));
-    }
-    return;
+    return vminvq_s32(v);
   } else
 #endif
   {
-    static_assert(!sizeof(Arch), "to_int32_rows: no implementation for this architecture");
+    static_assert(!sizeof(Arch), "lane_min: no implementation for this architecture");
+  }
+}
+
+template <class Arch>
+inline std::int32_t lane_max(xsimd::batch<std::int32_t, Arch> v) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    __m128i m = _mm_max_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+    m = _mm_max_epi32(m, _mm_shuffle_epi32(m, 0x4E));
+    return _mm_cvtsi128_si32(_mm_max_epi32(m, _mm_shuffle_epi32(m, 0xB1)));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    using Ints = xsimd::batch<std::int32_t, Arch>;
+    const Ints m = xsimd::max(v, Ints(_mm_shuffle_epi32(v, 0x4E)));
+    return _mm_cvtsi128_si32(xsimd::max(m, Ints(_mm_shuffle_epi32(m, 0xB1))));
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vmaxvq_s32(v);
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "lane_max: no implementation for this architecture");
   }
 }
 

@@ -35,7 +35,7 @@ inline void walk_triangle(const TriangleSetup& setup, Visitor& visitor) {
     walk_block<Arch>(setup, visitor);
   } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
     walk_block_16<Arch>(setup, visitor);
-  } else if (prefers_span_walk(setup.box) && span_walk_is_exact(setup)) {
+  } else if (prefers_span_walk(setup.box) && span_walk_fits(setup)) {
     walk_spans<Arch>(setup, visitor);
   } else if (setup.narrow) {
     walk_tiles<Arch, std::int32_t>(setup, visitor);
