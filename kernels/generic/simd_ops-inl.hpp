@@ -236,6 +236,38 @@ inline std::uint64_t sign_bits_8x8(const xsimd::batch<std::int32_t, Arch>* rows)
   }
 }
 
+// Eight values held as double batches, converted (exact integers in int32 range) to int32
+// batches: rows[8 / double lanes] -> out[8 / int32 lanes].
+template <class Arch>
+inline void to_int32_rows(const xsimd::batch<double, Arch>* rows,
+                          xsimd::batch<std::int32_t, Arch>* out) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    out[0] = _mm256_set_m128i(_mm256_cvttpd_epi32(rows[1]), _mm256_cvttpd_epi32(rows[0]));
+    return;
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    out[0] = _mm_unpacklo_epi64(_mm_cvttpd_epi32(rows[0]), _mm_cvttpd_epi32(rows[1]));
+    out[1] = _mm_unpacklo_epi64(_mm_cvttpd_epi32(rows[2]), _mm_cvttpd_epi32(rows[3]));
+    return;
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    for (int i = 0; i < 2; ++i) {
+      out[i] = vcombine_s32(vmovn_s64(vcvtq_s64_f64(rows[2 * i])),
+                            vmovn_s64(vcvtq_s64_f64(rows[2 * i + 1])));
+    }
+    return;
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "to_int32_rows: no implementation for this architecture");
+  }
+}
+
 // The smallest and the largest of the lanes of an int32 batch, by halving.
 template <class Arch>
 inline std::int32_t lane_min(xsimd::batch<std::int32_t, Arch> v) {

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -53,36 +54,43 @@ template <class Arch, int kLefts, int kRights>
 class StripSpans {
  public:
   using Ints = xsimd::batch<std::int32_t, Arch>;
+  using Doubles = xsimd::batch<double, Arch>;
   static constexpr std::size_t kIntParts = kTileSize / Ints::size;
+  static constexpr std::size_t kDoubleParts = kTileSize / Doubles::size;
   static constexpr int kEdges = kLefts + kRights;
   static constexpr std::int32_t kBlockTiles = 3;  // tiles whose masks are made at once
 
   // `order` lists the setup's edges in the order above; the first strip starts `first_row` rows
-  // below the origin. Each lane k starts from row first_row + k by stepping k single rows at
-  // once: N grows by k b = k (q1 A + s1), and E0 + k s1 < 8 A is reduced by 4A, 2A and A.
+  // below the origin. Lane k's F at row first_row + k is N / A rounded to nearest in double and
+  // corrected once: N is an integer below 2^43, exact in double, and the product N fl(1/A) errs
+  // by under 2^-52 |N / A| < 2^-23, so it rounds to F or F + 1. E = N - A F, with the true E in
+  // [-A, A), is then exact in int32 arithmetic modulo 2^32, and one step down corrects F.
   StripSpans(const TriangleSetup& setup, const int (&order)[3], std::int32_t first_row) {
     alignas(64) static constexpr std::int32_t kRow[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
+    alignas(64) static constexpr double kRowValue[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
     for (int i = 0; i < kEdges; ++i) {
       const EdgeSetup& edge = setup.edge[order[i]];
       const std::int32_t a = edge.a < 0 ? -edge.a : edge.a;
       const std::int64_t n0 = edge.g + std::int64_t{edge.b} * first_row;
-      const std::int64_t f0 = floor_divide<std::int64_t>(n0, a);
-      const std::int32_t e0 = static_cast<std::int32_t>(n0 - f0 * a);
-      const std::int32_t q1 = floor_divide(edge.b, a);
-      const std::int32_t s1 = edge.b - q1 * a;
-      const std::int32_t q8 = floor_divide(8 * edge.b, a);
+      const Doubles inverse(1.0 / a), first(static_cast<double>(n0)), b(edge.b);
+      Doubles quotient[kDoubleParts];
+      for (std::size_t h = 0; h < kDoubleParts; ++h) {
+        const Doubles n = first + b * Doubles::load_aligned(kRowValue + h * Doubles::size);
+        quotient[h] = xsimd::nearbyint(n * inverse);
+      }
+      Ints f[kIntParts];
+      to_int32_rows<Arch>(quotient, f);
       for (std::size_t h = 0; h < kIntParts; ++h) {
         const Ints k = Ints::load_aligned(kRow + h * Ints::size);
-        Ints e = Ints(e0) + k * Ints(s1);
-        Ints f = Ints(static_cast<std::int32_t>(f0)) + k * Ints(q1);
-        for (std::int32_t carry = 4; carry >= 1; carry /= 2) {
-          const Ints over = mask_lanes<Arch>(e > Ints(carry * a - 1));
-          e -= over & Ints(carry * a);
-          f += over & Ints(carry);
-        }
+        const Ints n = Ints(static_cast<std::int32_t>(n0)) + k * Ints(edge.b);  // modulo 2^32
+        Ints e = n - f[h] * Ints(a);
+        const Ints under = mask_lanes<Arch>(e < Ints(0));  // F was one too large
+        e += under & Ints(a);
+        f[h] += under;
         e_[i][h] = e;
-        x_[i][h] = i < kLefts ? -f : f + Ints(1);
+        x_[i][h] = i < kLefts ? -f[h] : f[h] + Ints(1);
       }
+      const std::int32_t q8 = floor_divide(8 * edge.b, a);
       x_step_[i] = i < kLefts ? -q8 : q8;
       e_step_[i] = 8 * edge.b - q8 * a;
       e_limit_[i] = a - 1;
@@ -187,8 +195,47 @@ class StripSpans {
   std::int32_t x_step_[kEdges], e_step_[kEdges], e_limit_[kEdges], a_[kEdges];
 };
 
-// Admits a triangle to the span walk: see "Ranges" above.
+// A triangle's edge set (see StripSpans) and its edges in that set's order, by the signs of
+// the edges' a: kEdgeSets[9 s0 + 3 s1 + s2] with s = 0 for a < 0, 1 for a = 0, 2 for a > 0.
+struct EdgeSet {
+  int lefts, rights;
+  int order[3];
+};
+
+inline constexpr auto kEdgeSets = [] {
+  std::array<EdgeSet, 27> sets{};
+  for (int index = 0; index < 27; ++index) {
+    const int signs[3] = {index / 9, index / 3 % 3, index % 3};
+    EdgeSet& set = sets[static_cast<std::size_t>(index)];
+    for (const int sign : signs) {
+      set.lefts += sign == 2;
+      set.rights += sign == 0;
+    }
+    int next_left = 0, next_right = set.lefts, next_horizontal = set.lefts + set.rights;
+    for (int e = 0; e < 3; ++e)
+      set.order[signs[e] == 2 ? next_left++ : (signs[e] == 0 ? next_right++ : next_horizontal++)] =
+          e;
+  }
+  return sets;
+}();
+
+inline const EdgeSet& edge_set(const TriangleSetup& setup) {
+  const auto sign = [](std::int32_t a) { return (a > 0) - (a < 0) + 1; };
+  return kEdgeSets[static_cast<std::size_t>(9 * sign(setup.edge[0].a) + 3 * sign(setup.edge[1].a) +
+                                            sign(setup.edge[2].a))];
+}
+
+// Admits a triangle to the span walk: see "Ranges" above. A narrow triangle (the tile walk's
+// int32 analysis, triangle_setup-inl.hpp) has |N| < 2^31 on every row from the origin to
+// 15 rows past its last tile row's first, which holds every row the walk steps to, so
+// |a| >= 4 is enough there; other triangles are checked at the first and last rows.
 inline bool span_walk_fits(const TriangleSetup& setup) {
+  if (setup.narrow) {
+    bool fits = true;
+    for (const EdgeSetup& edge : setup.edge)
+      fits = fits & ((edge.a == 0) | (edge.a >= 4) | (edge.a <= -4));
+    return fits;
+  }
   const std::int64_t last_row = setup.box.y1 - setup.origin_y + 2 * kTileSize;
   for (const EdgeSetup& edge : setup.edge) {
     if (edge.a == 0) continue;
@@ -199,25 +246,24 @@ inline bool span_walk_fits(const TriangleSetup& setup) {
   return true;
 }
 
-// The box's rows [y0, y1) that a horizontal edge, if any, leaves covered: its G = G0 + b r is
-// the same along a row, and covers r >= -floor(G0 / b) for b > 0, r <= floor(G0 / -b) for b < 0.
+// The box's rows [y0, y1) that the horizontal edge, if any, leaves covered (y0 == y1 when
+// none): its G = G0 + b r is the same along a row, and covers r >= -floor(G0 / b) for b > 0,
+// r <= floor(G0 / -b) for b < 0.
 struct RowRange {
   std::int32_t y0, y1;
 };
-inline RowRange covered_rows(const TriangleSetup& setup) {
+inline RowRange covered_rows(const TriangleSetup& setup, const EdgeSet& set) {
+  if (set.lefts + set.rights == 3) return {setup.box.y0, setup.box.y1};
+  const EdgeSetup& edge = setup.edge[set.order[2]];
   std::int64_t y0 = setup.box.y0, y1 = setup.box.y1;
-  for (const EdgeSetup& edge : setup.edge) {
-    if (edge.a != 0) continue;
-    if (edge.b > 0) {
-      y0 = std::max(y0, setup.origin_y - floor_divide<std::int64_t>(edge.g, edge.b));
-    } else {
-      y1 = std::min(y1,
-                    setup.origin_y + floor_divide<std::int64_t>(edge.g, -std::int64_t{edge.b}) + 1);
-    }
+  if (edge.b > 0) {
+    y0 = std::max(y0, setup.origin_y - floor_divide<std::int64_t>(edge.g, edge.b));
+  } else {
+    y1 = std::min(y1,
+                  setup.origin_y + floor_divide<std::int64_t>(edge.g, -std::int64_t{edge.b}) + 1);
   }
   y1 = std::max(y1, std::int64_t{setup.box.y0});
-  y0 = std::min(y0, y1);  // both within the box's rows now; y0 == y1 when none is covered
-  return {static_cast<std::int32_t>(y0), static_cast<std::int32_t>(y1)};
+  return {static_cast<std::int32_t>(std::min(y0, y1)), static_cast<std::int32_t>(y1)};
 }
 
 // Hands on the masks of tile columns [first, last) of a strip, kBlockTiles at a time.
@@ -238,12 +284,12 @@ template <class Spans, class Visitor>
 // walk_spans() for one edge set (see StripSpans): calls visitor.tile() for partial tiles and
 // visitor.full_tiles() for runs of whole tiles, in row order, like walk_tiles().
 template <class Arch, int kLefts, int kRights, class Visitor>
-[[gnu::always_inline]] inline void walk_spans_of(const TriangleSetup& setup, const int (&order)[3],
+[[gnu::always_inline]] inline void walk_spans_of(const TriangleSetup& setup, const EdgeSet& set,
                                                  RowRange rows, Visitor& visitor) {
   using Spans = StripSpans<Arch, kLefts, kRights>;
   // Strips on tile rows, from the one holding the first covered row.
   const std::int32_t first_ty = rows.y0 - ((rows.y0 - setup.origin_y) & (kTileSize - 1));
-  Spans spans(setup, order, first_ty - setup.origin_y);
+  Spans spans(setup, set.order, first_ty - setup.origin_y);
   const std::int32_t lo = setup.box.x0 - setup.origin_x, hi = setup.box.x1 - setup.origin_x;
   const std::uint32_t first_tile_x = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
   typename Spans::Ints begin[Spans::kIntParts], end[Spans::kIntParts];
@@ -269,11 +315,11 @@ template <class Arch, int kLefts, int kRights, class Visitor>
 // walk_spans() for a visitor that only counts pixels: strips from the first covered row, each
 // adding its spans' lengths; no mask is made.
 template <class Arch, int kLefts, int kRights, class Visitor>
-[[gnu::always_inline]] inline void count_spans_of(const TriangleSetup& setup, const int (&order)[3],
+[[gnu::always_inline]] inline void count_spans_of(const TriangleSetup& setup, const EdgeSet& set,
                                                   RowRange rows, Visitor& visitor) {
   using Spans = StripSpans<Arch, kLefts, kRights>;
   using Ints = typename Spans::Ints;
-  Spans spans(setup, order, rows.y0 - setup.origin_y);
+  Spans spans(setup, set.order, rows.y0 - setup.origin_y);
   const std::int32_t lo = setup.box.x0 - setup.origin_x, hi = setup.box.x1 - setup.origin_x;
   Ints begin[Spans::kIntParts], end[Spans::kIntParts];
   Ints sum(0);  // at most 2^15 columns times 2^12 strips per lane
@@ -290,27 +336,14 @@ template <class Arch, int kLefts, int kRights, class Visitor>
   visitor.add_pixels(static_cast<std::uint64_t>(xsimd::hadd(sum)));
 }
 
-// Calls walk.template operator()<kLefts, kRights>(order) for the triangle's edge set (see
-// StripSpans), with `order` listing its edges as that set orders them: the one branch on the
-// edges' signs per triangle.
-template <class Walk>
-[[gnu::always_inline]] inline void with_edge_set(const TriangleSetup& setup, const Walk& walk) {
-  int order[3], lefts = 0, rights = 0;
-  for (int e = 0; e < 3; ++e)
-    lefts += setup.edge[e].a > 0;
-  for (int e = 0; e < 3; ++e)
-    rights += setup.edge[e].a < 0;
-  int next_left = 0, next_right = lefts, next_horizontal = lefts + rights;
-  for (int e = 0; e < 3; ++e) {
-    const std::int32_t a = setup.edge[e].a;
-    order[a > 0 ? next_left++ : (a < 0 ? next_right++ : next_horizontal++)] = e;
-  }
-  if (lefts == 2) {
-    walk.template operator()<2, 1>(order);
-  } else if (rights == 2) {
-    walk.template operator()<1, 2>(order);
+// walk_spans() for one edge set, out of line: the strip loop compiled once per set.
+template <class Arch, int kLefts, int kRights, class Visitor>
+[[gnu::noinline]] void walk_spans_as(const TriangleSetup& setup, const EdgeSet& set, RowRange rows,
+                                     Visitor& visitor) {
+  if constexpr (requires { visitor.add_pixels(std::uint64_t{}); }) {
+    count_spans_of<Arch, kLefts, kRights>(setup, set, rows, visitor);
   } else {
-    walk.template operator()<1, 1>(order);
+    walk_spans_of<Arch, kLefts, kRights>(setup, set, rows, visitor);
   }
 }
 
@@ -318,16 +351,17 @@ template <class Walk>
 // row order, like walk_tiles(); or, for a visitor that only counts (add_pixels), hands it the
 // number of covered pixels. Needs span_walk_fits().
 template <class Arch, class Visitor>
-[[gnu::noinline]] void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
-  const RowRange rows = covered_rows(setup);
+inline void walk_spans(const TriangleSetup& setup, Visitor& visitor) {
+  const EdgeSet& set = edge_set(setup);
+  const RowRange rows = covered_rows(setup, set);
   if (rows.y0 >= rows.y1) return;
-  with_edge_set(setup, [&]<int kLefts, int kRights>(const int(&order)[3]) {
-    if constexpr (requires { visitor.add_pixels(std::uint64_t{}); }) {
-      count_spans_of<Arch, kLefts, kRights>(setup, order, rows, visitor);
-    } else {
-      walk_spans_of<Arch, kLefts, kRights>(setup, order, rows, visitor);
-    }
-  });
+  if (set.lefts == 2) {
+    walk_spans_as<Arch, 2, 1>(setup, set, rows, visitor);
+  } else if (set.rights == 2) {
+    walk_spans_as<Arch, 1, 2>(setup, set, rows, visitor);
+  } else {
+    walk_spans_as<Arch, 1, 1>(setup, set, rows, visitor);
+  }
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -22,6 +22,8 @@ using Arch = RowArch<EDGEWISE_ARCH>;
 inline constexpr std::int64_t kSpanWalkMinBoxArea =
     std::is_same_v<Arch, xsimd::sse2> ? INT64_MAX : 576;
 
+inline constexpr std::int32_t kCountSpansMinExtent = 8;
+
 inline bool prefers_span_walk(const PixelRect& box) {
   return std::int64_t{box.x1 - box.x0} * (box.y1 - box.y0) >= kSpanWalkMinBoxArea;
 }
@@ -31,6 +33,12 @@ inline bool prefers_span_walk(const PixelRect& box) {
 // drawn in.
 template <class Visitor>
 inline void walk_triangle(const TriangleSetup& setup, Visitor& visitor) {
+  if constexpr (requires { visitor.add_pixels(std::uint64_t{}); }) {
+    if (setup.extent > kCountSpansMinExtent && span_walk_fits(setup)) {
+      walk_spans<Arch>(setup, visitor);
+      return;
+    }
+  }
   if (setup.narrow && setup.extent <= kTileSize) {
     walk_block<Arch>(setup, visitor);
   } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
