@@ -75,7 +75,9 @@ class StripSpans {
       const Doubles inverse(1.0 / a), first(static_cast<double>(n0)), b(edge.b);
       Doubles quotient[kDoubleParts];
       for (std::size_t h = 0; h < kDoubleParts; ++h) {
-        const Doubles n = first + b * Doubles::load_aligned(kRowValue + h * Doubles::size);
+        // Exact either way, fused or not (b k and the sum are integers below 2^53).
+        const Doubles n =
+            xsimd::fma(b, Doubles::load_aligned(kRowValue + h * Doubles::size), first);
         quotient[h] = xsimd::nearbyint(n * inverse);
       }
       Ints f[kIntParts];
@@ -87,13 +89,12 @@ class StripSpans {
         const Ints under = mask_lanes<Arch>(e < Ints(0));  // F was one too large
         e += under & Ints(a);
         f[h] += under;
-        e_[i][h] = e;
+        e_[i][h] = e - Ints(a);
         x_[i][h] = i < kLefts ? -f[h] : f[h] + Ints(1);
       }
       const std::int32_t q8 = floor_divide(8 * edge.b, a);
       x_step_[i] = i < kLefts ? -q8 : q8;
       e_step_[i] = 8 * edge.b - q8 * a;
-      e_limit_[i] = a - 1;
       a_[i] = a;
     }
   }
@@ -120,7 +121,7 @@ class StripSpans {
     for (int i = 0; i < kEdges; ++i) {
       for (std::size_t h = 0; h < kIntParts; ++h) {
         const Ints e = e_[i][h] + Ints(e_step_[i]);
-        const Ints carry = mask_lanes<Arch>(e > Ints(e_limit_[i]));  // -1 where E + s >= A
+        const Ints carry = mask_lanes<Arch>(e > Ints(-1));  // -1 where E + s >= A
         e_[i][h] = e - (carry & Ints(a_[i]));
         x_[i][h] += Ints(x_step_[i]);
         x_[i][h] = i < kLefts ? x_[i][h] + carry : x_[i][h] - carry;
@@ -191,8 +192,8 @@ class StripSpans {
 
  private:
   Ints x_[kEdges][kIntParts];  // each lane's boundary: -F (left edges) or F + 1 (right edges)
-  Ints e_[kEdges][kIntParts];  // each lane's E
-  std::int32_t x_step_[kEdges], e_step_[kEdges], e_limit_[kEdges], a_[kEdges];
+  Ints e_[kEdges][kIntParts];  // each lane's E - A, in [-A, 0): a carry makes it non-negative
+  std::int32_t x_step_[kEdges], e_step_[kEdges], a_[kEdges];
 };
 
 // A triangle's edge set (see StripSpans) and its edges in that set's order, by the signs of
