@@ -157,13 +157,21 @@ class StripSpans {
                              std::int32_t lo, std::int32_t hi) {
     alignas(64) static constexpr std::int32_t kRow[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
     Ints outer_begin(hi), outer_end(lo), inner_begin(lo), inner_end(hi);
+    const bool partial = first_row > 0 || end_row < kTileSize;  // only a box's first or last
     for (std::size_t h = 0; h < kIntParts; ++h) {
-      const Ints k = Ints::load_aligned(kRow + h * Ints::size);
-      const auto valid = k >= Ints(first_row) && k < Ints(end_row);
-      outer_begin = xsimd::min(outer_begin, xsimd::select(valid, begin[h], Ints(hi)));
-      outer_end = xsimd::max(outer_end, xsimd::select(valid, end[h], Ints(lo)));
-      inner_begin = xsimd::max(inner_begin, xsimd::select(valid, begin[h], Ints(lo)));
-      inner_end = xsimd::min(inner_end, xsimd::select(valid, end[h], Ints(hi)));
+      Ints outer_b = begin[h], outer_e = end[h], inner_b = begin[h], inner_e = end[h];
+      if (partial) {  // rows outside the box count neither way
+        const Ints k = Ints::load_aligned(kRow + h * Ints::size);
+        const auto valid = k >= Ints(first_row) && k < Ints(end_row);
+        outer_b = xsimd::select(valid, outer_b, Ints(hi));
+        outer_e = xsimd::select(valid, outer_e, Ints(lo));
+        inner_b = xsimd::select(valid, inner_b, Ints(lo));
+        inner_e = xsimd::select(valid, inner_e, Ints(hi));
+      }
+      outer_begin = xsimd::min(outer_begin, outer_b);
+      outer_end = xsimd::max(outer_end, outer_e);
+      inner_begin = xsimd::max(inner_begin, inner_b);
+      inner_end = xsimd::min(inner_end, inner_e);
     }
     // Within [lo, hi] (lo >= 0), so shifts floor.
     const std::int32_t first = std::min(lane_min<Arch>(outer_begin), hi);
