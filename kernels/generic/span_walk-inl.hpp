@@ -61,10 +61,12 @@ class StripSpans {
   static constexpr std::int32_t kBlockTiles = 3;  // tiles whose masks are made at once
 
   // `order` lists the setup's edges in the order above; the first strip starts `first_row` rows
-  // below the origin. Lane k's F at row first_row + k is N / A rounded to nearest in double and
-  // corrected once: N is an integer below 2^43, exact in double, and the product N fl(1/A) errs
-  // by under 2^-52 |N / A| < 2^-23, so it rounds to F or F + 1. E = N - A F, with the true E in
-  // [-A, A), is then exact in int32 arithmetic modulo 2^32, and one step down corrects F.
+  // below the origin. Lane k's F at row first_row + k is floor((N + 1/2) / A), computed in
+  // double: N + 1/2 is exact (|N| < 2^43), so the product with fl(1/A) errs by under
+  // 2^-52 |(N + 1/2) / A| < 2^-23 (|N| < 2^29 A), less than the quotient's distance to the
+  // nearest integer, at least 1 / (2A) > 2^-23 for A < 2^22; hence its floor is exact, and
+  // floor((N + 1/2) / A) = floor(N / A) for an integer N. E - A = N - A (F + 1), whose true
+  // value lies in [-A, 0), is then exact in int32 arithmetic modulo 2^32.
   StripSpans(const TriangleSetup& setup, const int (&order)[3], std::int32_t first_row) {
     alignas(64) static constexpr std::int32_t kRow[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
     alignas(64) static constexpr double kRowValue[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
@@ -72,25 +74,22 @@ class StripSpans {
       const EdgeSetup& edge = setup.edge[order[i]];
       const std::int32_t a = edge.a < 0 ? -edge.a : edge.a;
       const std::int64_t n0 = edge.g + std::int64_t{edge.b} * first_row;
-      const Doubles inverse(1.0 / a), first(static_cast<double>(n0)), b(edge.b);
+      const Doubles inverse(1.0 / a), first(static_cast<double>(n0) + 0.5), b(edge.b);
       Doubles quotient[kDoubleParts];
       for (std::size_t h = 0; h < kDoubleParts; ++h) {
-        // Exact either way, fused or not (b k and the sum are integers below 2^53).
+        // Exact either way, fused or not (b k and the sum need at most 45 bits).
         const Doubles n =
             xsimd::fma(b, Doubles::load_aligned(kRowValue + h * Doubles::size), first);
-        quotient[h] = xsimd::nearbyint(n * inverse);
+        quotient[h] = xsimd::floor(n * inverse);
       }
       Ints f[kIntParts];
       to_int32_rows<Arch>(quotient, f);
       for (std::size_t h = 0; h < kIntParts; ++h) {
         const Ints k = Ints::load_aligned(kRow + h * Ints::size);
         const Ints n = Ints(static_cast<std::int32_t>(n0)) + k * Ints(edge.b);  // modulo 2^32
-        Ints e = n - f[h] * Ints(a);
-        const Ints under = mask_lanes<Arch>(e < Ints(0));  // F was one too large
-        e += under & Ints(a);
-        f[h] += under;
-        e_[i][h] = e - Ints(a);
-        x_[i][h] = i < kLefts ? -f[h] : f[h] + Ints(1);
+        const Ints f1 = f[h] + Ints(1);
+        e_[i][h] = n - f1 * Ints(a);
+        x_[i][h] = i < kLefts ? -f[h] : f1;
       }
       const std::int32_t q8 = floor_divide(8 * edge.b, a);
       x_step_[i] = i < kLefts ? -q8 : q8;
@@ -234,20 +233,25 @@ inline const EdgeSet& edge_set(const TriangleSetup& setup) {
                                             sign(setup.edge[2].a))];
 }
 
-// Admits a triangle to the span walk: see "Ranges" above. A narrow triangle (the tile walk's
-// int32 analysis, triangle_setup-inl.hpp) has |N| < 2^31 on every row from the origin to
-// 15 rows past its last tile row's first, which holds every row the walk steps to, so
-// |a| >= 4 is enough there; other triangles are checked at the first and last rows.
+// Admits a triangle to the span walk: see "Ranges" above, and every non-horizontal edge needs
+// |a| < 2^22 (StripSpans' constructor; an edge under 16384 px tall). A narrow triangle (the
+// tile walk's int32 analysis, triangle_setup-inl.hpp) has |N| < 2^31 on every row from the
+// origin to 15 rows past its last tile row's first, which holds every row the walk steps to,
+// so |a| >= 4 is enough there; other triangles are checked at the first and last rows.
+inline constexpr std::int32_t kMaxSpanA = 1 << 22;
+
 inline bool span_walk_fits(const TriangleSetup& setup) {
   if (setup.narrow) {
     bool fits = true;
     for (const EdgeSetup& edge : setup.edge)
-      fits = fits & ((edge.a == 0) | (edge.a >= 4) | (edge.a <= -4));
+      fits = fits & ((edge.a == 0) | ((edge.a >= 4) & (edge.a < kMaxSpanA)) |
+                     ((edge.a <= -4) & (edge.a > -kMaxSpanA)));
     return fits;
   }
   const std::int64_t last_row = setup.box.y1 - setup.origin_y + 2 * kTileSize;
   for (const EdgeSetup& edge : setup.edge) {
     if (edge.a == 0) continue;
+    if (edge.a >= kMaxSpanA || edge.a <= -kMaxSpanA) return false;
     const std::int64_t limit = std::int64_t{edge.a < 0 ? -edge.a : edge.a} << 29;
     const std::int64_t n0 = edge.g, n1 = edge.g + std::int64_t{edge.b} * last_row;
     if (n0 <= -limit || n0 >= limit || n1 <= -limit || n1 >= limit) return false;
