@@ -68,7 +68,6 @@ class StripSpans {
   // floor((N + 1/2) / A) = floor(N / A) for an integer N. E - A = N - A (F + 1), whose true
   // value lies in [-A, 0), is then exact in int32 arithmetic modulo 2^32.
   StripSpans(const TriangleSetup& setup, const int (&order)[3], std::int32_t first_row) {
-    alignas(64) static constexpr std::int32_t kRow[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
     alignas(64) static constexpr double kRowValue[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
     for (int i = 0; i < kEdges; ++i) {
       const EdgeSetup& edge = setup.edge[order[i]];
@@ -84,17 +83,28 @@ class StripSpans {
       }
       Ints f[kIntParts];
       to_int32_rows<Arch>(quotient, f);
+      for (std::size_t h = 0; h < kIntParts; ++h)
+        x_[i][h] = i < kLefts ? -f[h] : f[h] + Ints(1);
+      a_[i] = a;
+      b_[i] = edge.b;
+      n0_[i] = static_cast<std::int32_t>(n0);  // modulo 2^32
+    }
+  }
+
+  // What step() needs besides the boundaries, apart so that a box of one strip skips it.
+  [[gnu::always_inline]] void prepare_steps() {
+    alignas(64) static constexpr std::int32_t kRow[kTileSize] = {0, 1, 2, 3, 4, 5, 6, 7};
+    for (int i = 0; i < kEdges; ++i) {
+      const std::int32_t a = a_[i];
       for (std::size_t h = 0; h < kIntParts; ++h) {
         const Ints k = Ints::load_aligned(kRow + h * Ints::size);
-        const Ints n = Ints(static_cast<std::int32_t>(n0)) + k * Ints(edge.b);  // modulo 2^32
-        const Ints f1 = f[h] + Ints(1);
+        const Ints n = Ints(n0_[i]) + k * Ints(b_[i]);               // modulo 2^32
+        const Ints f1 = i < kLefts ? Ints(1) - x_[i][h] : x_[i][h];  // F + 1
         e_[i][h] = n - f1 * Ints(a);
-        x_[i][h] = i < kLefts ? -f[h] : f1;
       }
-      const std::int32_t q8 = floor_divide(8 * edge.b, a);
+      const std::int32_t q8 = floor_divide(8 * b_[i], a);
       x_step_[i] = i < kLefts ? -q8 : q8;
-      e_step_[i] = 8 * edge.b - q8 * a;
-      a_[i] = a;
+      e_step_[i] = 8 * b_[i] - q8 * a;
     }
   }
 
@@ -200,7 +210,7 @@ class StripSpans {
  private:
   Ints x_[kEdges][kIntParts];  // each lane's boundary: -F (left edges) or F + 1 (right edges)
   Ints e_[kEdges][kIntParts];  // each lane's E - A, in [-A, 0): a carry makes it non-negative
-  std::int32_t x_step_[kEdges], e_step_[kEdges], a_[kEdges];
+  std::int32_t x_step_[kEdges], e_step_[kEdges], a_[kEdges], b_[kEdges], n0_[kEdges];
 };
 
 // A triangle's edge set (see StripSpans) and its edges in that set's order, by the signs of
@@ -303,6 +313,7 @@ template <class Arch, int kLefts, int kRights, class Visitor>
   // Strips on tile rows, from the one holding the first covered row.
   const std::int32_t first_ty = rows.y0 - ((rows.y0 - setup.origin_y) & (kTileSize - 1));
   Spans spans(setup, set.order, first_ty - setup.origin_y);
+  spans.prepare_steps();
   const std::int32_t lo = setup.box.x0 - setup.origin_x, hi = setup.box.x1 - setup.origin_x;
   const std::uint32_t first_tile_x = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
   typename Spans::Ints begin[Spans::kIntParts], end[Spans::kIntParts];
@@ -337,6 +348,7 @@ template <class Arch, int kLefts, int kRights, class Visitor>
   Ints begin[Spans::kIntParts], end[Spans::kIntParts];
   Ints sum(0);  // at most 2^15 columns times 2^12 strips per lane
   std::int32_t left = rows.y1 - rows.y0;
+  if (left > kTileSize) spans.prepare_steps();
   for (; left > kTileSize; left -= kTileSize) {
     spans.compute(lo, hi, begin, end);
     sum += Spans::lengths(begin, end, kTileSize);
