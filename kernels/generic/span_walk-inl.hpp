@@ -12,16 +12,18 @@
 // E + s - c A, with c = (E + s >= A). This is the scanline DDA (the quotient and remainder of
 // the edge's x-step, carried exactly), run on the 8 rows of a strip as 8 int32 lanes.
 //
-// Ranges. span_walk_fits() admits a triangle only when |N(r)| < 2^29 A for every such edge at
-// r = 0 and at r = (box.y1 - origin_y) + 16; N is affine in r, so the bound holds on every row
-// in between, which holds every row the walk steps to (the strips start at or below row 0, and
-// the last one, plus the step past it, ends before box.y1 + 16). Hence |F| <= 2^29 and the
-// boundaries -F and F + 1 lie within +-(2^29 + 1). Below, |b| < 2^25 and 1 <= A < 2^25
-// (triangle_setup-inl.hpp), so |q| <= 8 |b| < 2^28, s < 2^25, E + s < 2^26; a lane's start,
-// E0 + k (b mod A) for k <= 7, is below 8 A <= 2^28, and F0 + k floor(b / A) lies within 7 of
-// F(k). Every int32 value stays far from overflow; N itself (|G0| < 2^42) is formed in int64.
-// The triangles left out have an edge nearly horizontal for the box's height (more than 2^14
-// columns per row for a 2^15-row box): they take the tile walk.
+// Ranges. span_walk_fits() admits a triangle only when every such edge has A < 2^22 and
+// |N(r)| < 2^29 A at r = 0 and at r = (box.y1 - origin_y) + 16 (or, for a triangle whose tile
+// walk fits in int32, A >= 4: then |N| < 2^31 <= 2^29 A on those rows); N is affine in r, so
+// the bound holds on every row in between, which holds every row the walk steps to (the strips
+// start at or below row 0, and the last one, plus the step past it, ends before box.y1 + 16).
+// Hence |F| <= 2^29 and the boundaries -F and F + 1 lie within +-(2^29 + 1). With |b| < 2^25,
+// |q| <= 8 |b| < 2^28 and s < A < 2^22; the lanes keep E - A in [-A, 0), and E - A + s in
+// [-A, A) carries exactly when it is non-negative. Every int32 value stays far from overflow
+// but the lanes' start, computed modulo 2^32 on purpose (StripSpans' constructor); N itself
+// (|G0| < 2^42) is formed in int64. The triangles left out have an edge nearly horizontal for
+// the box's height (more than 2^14 columns per row for a 2^15-row box), or one over 16384 px
+// tall: they take the tile walk.
 #pragma once
 
 #include <algorithm>
