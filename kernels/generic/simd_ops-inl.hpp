@@ -147,6 +147,25 @@ template <class Arch>
   }
 }
 
+// The lanes of an int32 comparison as int32 lanes, all ones where it holds.
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<std::int32_t, Arch> mask_lanes(
+    xsimd::batch_bool<std::int32_t, Arch> mask) {
+#if defined(__aarch64__)
+  if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vreinterpretq_s32_u32(mask);
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch> || std::is_base_of_v<xsimd::avx, Arch>) {
+    return typename xsimd::batch<std::int32_t, Arch>::register_type(mask);  // the same register
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "mask_lanes: no implementation for this architecture");
+  }
+}
+
 // a / b, correctly rounded as the scalar division is. (xsimd 8.1 divides float batches on
 // AArch64 by a reciprocal estimate refined by Newton steps, which can differ in the last bit.)
 template <class Arch>
@@ -246,6 +265,59 @@ inline void to_int32_rows(const xsimd::batch<double, Arch>* rows,
 #endif
   {
     static_assert(!sizeof(Arch), "to_int32_rows: no implementation for this architecture");
+  }
+}
+
+// The smallest and the largest of the lanes of an int32 batch, by halving.
+template <class Arch>
+inline std::int32_t lane_min(xsimd::batch<std::int32_t, Arch> v) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    __m128i m = _mm_min_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+    m = _mm_min_epi32(m, _mm_shuffle_epi32(m, 0x4E));
+    return _mm_cvtsi128_si32(_mm_min_epi32(m, _mm_shuffle_epi32(m, 0xB1)));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    using Ints = xsimd::batch<std::int32_t, Arch>;
+    const Ints m = xsimd::min(v, Ints(_mm_shuffle_epi32(v, 0x4E)));
+    return _mm_cvtsi128_si32(xsimd::min(m, Ints(_mm_shuffle_epi32(m, 0xB1))));
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vminvq_s32(v);
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "lane_min: no implementation for this architecture");
+  }
+}
+
+template <class Arch>
+inline std::int32_t lane_max(xsimd::batch<std::int32_t, Arch> v) {
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    __m128i m = _mm_max_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+    m = _mm_max_epi32(m, _mm_shuffle_epi32(m, 0x4E));
+    return _mm_cvtsi128_si32(_mm_max_epi32(m, _mm_shuffle_epi32(m, 0xB1)));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    using Ints = xsimd::batch<std::int32_t, Arch>;
+    const Ints m = xsimd::max(v, Ints(_mm_shuffle_epi32(v, 0x4E)));
+    return _mm_cvtsi128_si32(xsimd::max(m, Ints(_mm_shuffle_epi32(m, 0xB1))));
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vmaxvq_s32(v);
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "lane_max: no implementation for this architecture");
   }
 }
 

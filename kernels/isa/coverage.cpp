@@ -25,6 +25,7 @@ struct CountingVisitor {
   void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t, std::uint64_t mask) {
     pixels += static_cast<std::uint64_t>(std::popcount(mask)) * (end - begin);
   }
+  void add_pixels(std::uint64_t count) { pixels += count; }  // the span walk's count
 };
 
 // Counts the covered samples of every sample of the pattern.

@@ -83,6 +83,43 @@ std::optional<PixelRect> batch_scissor(Random& random, const TriangleSource& sou
   return PixelRect{x0, y0, x1, y1};
 }
 
+// count_coverage() on one thread against the reference's masks (of every sample, with
+// samples): the whole call's count, and with `per_triangle` each triangle's count from a call of
+// its own.
+::testing::AssertionResult same_counts(const RasterCall& call, const RasterRun& expected, Isa isa,
+                                       bool per_triangle) {
+  RasterOptions options;
+  options.isa = isa;
+  options.threads = 1;
+  options.cull = call.cull;
+  options.samples = call.samples;
+  std::vector<std::uint64_t> pixels(expected.statuses.size());
+  std::uint64_t total = 0;
+  for (const TileCoverage& tile : expected.tiles) {
+    pixels[tile.triangle] += static_cast<std::uint64_t>(std::popcount(tile.mask));
+    total += static_cast<std::uint64_t>(std::popcount(tile.mask));
+  }
+  const std::uint64_t counted =
+      count_coverage(call.vertices, call.indices, call.target, options).pixels;
+  if (counted != total) {
+    return ::testing::AssertionFailure()
+           << "count_coverage: " << counted << " pixels, reference " << total << "\n";
+  }
+  if (!per_triangle) return ::testing::AssertionSuccess();
+  for (std::size_t t = 0; t < pixels.size(); ++t) {
+    const std::uint64_t one =
+        call.indices.empty()
+            ? count_coverage(call.vertices.subspan(3 * t, 3), {}, call.target, options).pixels
+            : count_coverage(call.vertices, call.indices.subspan(3 * t, 3), call.target, options)
+                  .pixels;
+    if (one != pixels[t]) {
+      return ::testing::AssertionFailure() << "count_coverage of triangle " << t << ": " << one
+                                           << " pixels, reference " << pixels[t] << "\n";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
 // `samples` per pixel (RasterOptions::samples) on a `fraction` of the source's share of the
 // budget.
 void run_differential(Isa isa, std::string_view source_name, int samples = 1,
@@ -129,10 +166,15 @@ void run_differential(Isa isa, std::string_view source_name, int samples = 1,
     const RasterRun actual = run_raster(isa, call);
     const ::testing::AssertionResult same = same_coverage(call, expected, actual);
     const ::testing::AssertionResult sane = well_formed(call, actual);
-    if (!same || !sane) {
+    // count_coverage() takes paths of its own (the span walk's counts, without masks): its
+    // count must be the reference's, for the batch and, in every 16th batch, per triangle.
+    const ::testing::AssertionResult counted =
+        same_counts(call, expected, isa, done / kBatchSize % 16 == 0);
+    if (!same || !sane || !counted) {
       ADD_FAILURE() << "seed " << seed << ", source " << source.name << ", triangles " << done
                     << ".." << done + n - 1 << "\nreplay: " << replay << "\n"
-                    << (same ? "" : same.message()) << (sane ? "" : sane.message());
+                    << (same ? "" : same.message()) << (sane ? "" : sane.message())
+                    << (counted ? "" : counted.message());
       if (++mismatches == kMaxReportedMismatches) return;
     }
     drawn += expected.report.drawn;
@@ -233,6 +275,43 @@ TEST_P(Differential, SpanWalkEdgeSets) {
   EXPECT_EQ(counted, covered_pixels(expected).size());
   // The set is meant for the span walk: most boxes are large enough for it.
   EXPECT_GT(expected.tiles.size(), 3000u * 8u);
+}
+
+// The span walk's integer edge stepping admits an edge while its first covered column stays
+// within 2^29 of the origin on every row the walk visits, and needs |a| >= 4 (an edge rising
+// 4/256 px or more) where the tile walk's int32 bound stands in for that check. Edges rising
+// 1 to 8 steps over up to 16384 px, in boxes up to 8192 rows tall, with apexes on either side,
+// straddle both limits; a window keeps the reference cheap. Masks and counts must match.
+TEST_P(Differential, SpanWalkNearItsLimits) {
+  Random random(0x5a4e'0111'0175);
+  const float step = 1.0f / 256.0f;
+  std::vector<Vec2> vertices;
+  for (int t = 0; t < 600; ++t) {
+    const float x0 = static_cast<float>(random.integer(0, 8192)) + step * random.integer(0, 255);
+    const float y0 = static_cast<float>(random.integer(0, 8192)) + step * random.integer(0, 255);
+    const float run = static_cast<float>(random.integer(16, 16384));
+    const float rise = step * static_cast<float>(random.integer(1, 8));
+    const float height =
+        static_cast<float>(random.integer(8, 8192)) * (random.chance(0.5) ? 1 : -1);
+    Vec2 tri[3] = {{x0, y0},
+                   {x0 + run, y0 + rise},
+                   {x0 + static_cast<float>(random.uniform(-run, 2 * run)), y0 + height}};
+    if (random.chance(0.5)) std::swap(tri[1], tri[2]);
+    vertices.insert(vertices.end(), tri, tri + 3);
+  }
+  for (int window = 0; window < 40; ++window) {
+    RasterTarget target{kMaxTargetSize, kMaxTargetSize, std::nullopt};
+    // Windows on the triangles' long edges and near their apexes.
+    const Vec2& at = vertices[static_cast<std::size_t>(random.integer(0, 3 * 600 - 1))];
+    const std::int32_t x = std::clamp(static_cast<std::int32_t>(at.x) - 32, 0, kMaxTargetSize - 96);
+    const std::int32_t y = std::clamp(static_cast<std::int32_t>(at.y) - 32, 0, kMaxTargetSize - 96);
+    target.scissor = PixelRect{x, y, x + 96, y + 96};
+    const RasterCall call{vertices, {}, target, CullMode::none};
+    const RasterRun expected = run_raster(Isa::reference, call);
+    const RasterRun actual = run_raster(isa(), call);
+    EXPECT_TRUE(same_coverage(call, expected, actual));
+    EXPECT_TRUE(same_counts(call, expected, isa(), window % 4 == 0));
+  }
 }
 
 TEST(DifferentialSources, SharesCoverTheBudget) {
