@@ -269,6 +269,18 @@ inline void to_int32_rows(const xsimd::batch<double, Arch>* rows,
 }
 
 // The smallest and the largest of the lanes of an int32 batch, by halving.
+// a * b modulo 2^32 in every lane. The product is taken in unsigned lanes: where an ISA has no
+// 32-bit vector multiply (SSE2), xsimd multiplies lane by lane in scalar code, where a signed
+// overflow would be undefined behaviour.
+template <class Arch>
+inline xsimd::batch<std::int32_t, Arch> wrapping_multiply(xsimd::batch<std::int32_t, Arch> a,
+                                                          xsimd::batch<std::int32_t, Arch> b) {
+  using Signed = xsimd::batch<std::int32_t, Arch>;
+  using Unsigned = xsimd::batch<std::uint32_t, Arch>;
+  return xsimd::bitwise_cast<Signed>(xsimd::bitwise_cast<Unsigned>(a) *
+                                     xsimd::bitwise_cast<Unsigned>(b));
+}
+
 template <class Arch>
 inline std::int32_t lane_min(xsimd::batch<std::int32_t, Arch> v) {
 #if defined(__AVX2__)

@@ -100,9 +100,9 @@ class StripSpans {
       const std::int32_t a = a_[i];
       for (std::size_t h = 0; h < kIntParts; ++h) {
         const Ints k = Ints::load_aligned(kRow + h * Ints::size);
-        const Ints n = Ints(n0_[i]) + k * Ints(b_[i]);               // modulo 2^32
+        const Ints n = Ints(n0_[i]) + k * Ints(b_[i]);               // |k b| < 2^28
         const Ints f1 = i < kLefts ? Ints(1) - x_[i][h] : x_[i][h];  // F + 1
-        e_[i][h] = n - f1 * Ints(a);
+        e_[i][h] = n - wrapping_multiply<Arch>(f1, Ints(a));         // modulo 2^32
       }
       const std::int32_t q8 = floor_divide(8 * b_[i], a);
       x_step_[i] = i < kLefts ? -q8 : q8;
