@@ -5,33 +5,22 @@
 
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
-#include "exact_area_triangles.hpp"
+#include "exact_area_workload.hpp"
 
 namespace edgewise::bench {
 namespace {
-
-constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0001;
 
 struct AreaCase {
   int area;           // px^2 per triangle
   std::size_t batch;  // triangles per call
 };
 constexpr AreaCase kAreas[] = {{8, 16384}, {64, 8192}, {1000, 1024}, {200000, 16}};
-
-const std::vector<Vec2>& workload(const AreaCase& c) {
-  static std::map<int, std::vector<Vec2>> cache;
-  auto [it, inserted] = cache.try_emplace(c.area);
-  if (inserted)
-    it->second = workload::exact_area_triangles(c.batch, c.area, kWidth, kHeight, kSeed);
-  return it->second;
-}
 
 // Counts what a call delivered: tiles, and once, the pixels by kind and the summed area.
 class CountingAreaSink final : public AreaSink {
@@ -53,7 +42,7 @@ class CountingAreaSink final : public AreaSink {
 };
 
 void areas(benchmark::State& state, Isa isa, AreaCase c) {
-  const std::vector<Vec2>& vertices = workload(c);
+  const std::vector<Vec2>& vertices = exact_area_workload(c.area, c.batch);
   const RasterTarget target{kWidth, kHeight, {}};
   RasterOptions options;
   options.isa = isa;

@@ -5,18 +5,15 @@
 
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
-#include "exact_area_triangles.hpp"
+#include "exact_area_workload.hpp"
 
 namespace edgewise::bench {
 namespace {
-
-constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0001;
 
 struct AreaCase {
   int area;           // px^2 per triangle
@@ -31,16 +28,8 @@ constexpr AreaCase kAreas[] = {{8, 65536}, {64, 32768}, {1000, 4096}, {200000, 1
 // benchmark measures something else (a culled batch, a broken kernel).
 constexpr double kPixelCountTolerance = 0.05;
 
-const std::vector<Vec2>& workload(const AreaCase& c) {
-  static std::map<int, std::vector<Vec2>> cache;
-  auto [it, inserted] = cache.try_emplace(c.area);
-  if (inserted)
-    it->second = workload::exact_area_triangles(c.batch, c.area, kWidth, kHeight, kSeed);
-  return it->second;
-}
-
 void coverage(benchmark::State& state, Isa isa, AreaCase c, int samples) {
-  const std::vector<Vec2>& vertices = workload(c);
+  const std::vector<Vec2>& vertices = exact_area_workload(c.area, c.batch);
   const RasterTarget target{kWidth, kHeight, {}};
   RasterOptions options;
   options.isa = isa;

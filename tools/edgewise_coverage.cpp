@@ -128,16 +128,20 @@ std::vector<Vec2> read_triangles(std::istream& in, const std::string& name) {
   return vertices;
 }
 
-class TileCollector final : public CoverageSink {
+// Keeps every tile a sink of masks (CoverageSink) or of areas (AreaSink) is handed.
+template <class Sink, class Tile>
+class Collector final : public Sink {
  public:
-  void consume(std::span<const TileCoverage> tiles) override {
+  void consume(std::span<const Tile> tiles) override {
     tiles_.insert(tiles_.end(), tiles.begin(), tiles.end());
   }
-  std::vector<TileCoverage>& tiles() { return tiles_; }
+  std::vector<Tile>& tiles() { return tiles_; }
 
  private:
-  std::vector<TileCoverage> tiles_;
+  std::vector<Tile> tiles_;
 };
+using TileCollector = Collector<CoverageSink, TileCoverage>;
+using AreaCollector = Collector<AreaSink, AreaTile>;
 
 // Appends ' <row>:<first>-<last>' (huge triangles have thousands of runs: no temporaries).
 void append_run(std::string& out, std::uint32_t row, std::uint32_t first, std::uint32_t last) {
@@ -227,17 +231,6 @@ std::string format_sample_masks(std::span<const TileCoverage> tiles, std::uint64
   }
   return std::to_string(pixel_count) + pixels;
 }
-
-class AreaCollector final : public AreaSink {
- public:
-  void consume(std::span<const AreaTile> tiles) override {
-    tiles_.insert(tiles_.end(), tiles.begin(), tiles.end());
-  }
-  std::vector<AreaTile>& tiles() { return tiles_; }
-
- private:
-  std::vector<AreaTile> tiles_;
-};
 
 // Calls pixel(x, y, area) for each pixel of a triangle's area tiles (in row order), row by row.
 template <class Pixel>
