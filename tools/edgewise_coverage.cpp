@@ -143,6 +143,15 @@ class Collector final : public Sink {
 using TileCollector = Collector<CoverageSink, TileCoverage>;
 using AreaCollector = Collector<AreaSink, AreaTile>;
 
+// The end of the tile row that starts at tiles[begin] (tiles sorted by tile row).
+template <class Tile>
+std::size_t tile_row_end(std::span<const Tile> tiles, std::size_t begin) {
+  std::size_t end = begin;
+  while (end < tiles.size() && tiles[end].tile_y == tiles[begin].tile_y)
+    ++end;
+  return end;
+}
+
 // Appends ' <row>:<first>-<last>' (huge triangles have thousands of runs: no temporaries).
 void append_run(std::string& out, std::uint32_t row, std::uint32_t first, std::uint32_t last) {
   const auto append_number = [&out](std::uint32_t value) {
@@ -163,9 +172,7 @@ std::string format_runs(std::span<const TileCoverage> tiles, std::uint64_t& pixe
   std::string runs;
   pixel_count = 0;
   for (std::size_t row_begin = 0; row_begin < tiles.size();) {
-    std::size_t row_end = row_begin;
-    while (row_end < tiles.size() && tiles[row_end].tile_y == tiles[row_begin].tile_y)
-      ++row_end;
+    const std::size_t row_end = tile_row_end(tiles, row_begin);
     for (int y = 0; y < kTileSize; ++y) {
       const std::uint32_t row = std::uint32_t{tiles[row_begin].tile_y} * kTileSize + y;
       std::optional<std::uint32_t> first, last;
@@ -202,9 +209,7 @@ std::string format_sample_masks(std::span<const TileCoverage> tiles, std::uint64
   std::string pixels;
   pixel_count = 0;
   for (std::size_t row_begin = 0; row_begin < tiles.size();) {
-    std::size_t row_end = row_begin;
-    while (row_end < tiles.size() && tiles[row_end].tile_y == tiles[row_begin].tile_y)
-      ++row_end;
+    const std::size_t row_end = tile_row_end(tiles, row_begin);
     for (int y = 0; y < kTileSize; ++y) {
       for (std::size_t t = row_begin; t < row_end;) {
         // The tile's records, one per sample with a covered sample.
@@ -236,9 +241,7 @@ std::string format_sample_masks(std::span<const TileCoverage> tiles, std::uint64
 template <class Pixel>
 void for_each_area_pixel(std::span<const AreaTile> tiles, Pixel&& pixel) {
   for (std::size_t row_begin = 0; row_begin < tiles.size();) {
-    std::size_t row_end = row_begin;
-    while (row_end < tiles.size() && tiles[row_end].tile_y == tiles[row_begin].tile_y)
-      ++row_end;
+    const std::size_t row_end = tile_row_end(tiles, row_begin);
     for (int y = 0; y < kTileSize; ++y) {
       for (std::size_t t = row_begin; t < row_end; ++t) {
         for (int x = 0; x < kTileSize; ++x) {

@@ -16,6 +16,7 @@
 // least zero).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
