@@ -54,6 +54,10 @@ struct PlaneGroup {
   float z0[kLanes], dzdx[kLanes], dzdy[kLanes];
   float max_depth[kLanes];                     // the largest vertex depth
   bool perspective[kLanes];                    // colour divides by the plane of 1 / w
+  // The smallest vertex 1 / w, which the plane of 1 / w is kept from falling below before the
+  // division (outside the triangle, where a multisampled pixel's centre may lie, it can), as
+  // the reference's perspective-correct weights keep the interpolated 1 / w.
+  float min_inverse_w[kLanes];
   ColourPlane colour[kShadingPlanes][kLanes];  // colour, then normal planes
 };
 
@@ -117,8 +121,12 @@ inline void set_up_plane_group(const PlaneGroupInput<Arch>& in, bool colour_plan
                           static_cast<float>(dy[l])};
     }
   }
-  for (std::size_t l = 0; l < kLanes; ++l)
+  alignas(64) double smallest[kLanes];
+  xsimd::min(xsimd::min(inverse_w[0], inverse_w[1]), inverse_w[2]).store_aligned(smallest);
+  for (std::size_t l = 0; l < kLanes; ++l) {
     out.perspective[l] = divided[l] != 0.0;
+    out.min_inverse_w[l] = static_cast<float>(smallest[l]);
+  }
   if (!normal_planes) return;
 
   D f[3][kNormalPlanes];

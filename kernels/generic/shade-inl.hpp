@@ -9,11 +9,13 @@
 // pixel. Rows without covered samples are skipped.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <type_traits>
 
 #include <xsimd/xsimd.hpp>
@@ -53,7 +55,15 @@ class ShadingVisitor {
         // Model no more than the scene needs: Gouraud colour by plane equations interpolates the
         // colours (and diffuse the normals) directly, and then, untextured, needs nothing per
         // triangle beyond the planes.
-        needs_vertices_(textured_ || !colour_planes_) {}
+        needs_vertices_(textured_ || !colour_planes_),
+        pattern_(batch.coverage.samples) {
+    for (const SampleOffset& offset : pattern_) {
+      sample_reach_.x_min = std::min(sample_reach_.x_min, std::int32_t{offset.x});
+      sample_reach_.x_max = std::max(sample_reach_.x_max, std::int32_t{offset.x});
+      sample_reach_.y_min = std::min(sample_reach_.y_min, std::int32_t{offset.y});
+      sample_reach_.y_max = std::max(sample_reach_.y_max, std::int32_t{offset.y});
+    }
+  }
 
   // The depth and colour planes of a group of triangles (plane_setup-inl.hpp), before
   // begin_triangle() for each.
@@ -93,6 +103,7 @@ class ShadingVisitor {
     max_vertex_depth_ = group_.max_depth[l];
     if (colour_planes_) {
       perspective_ = group_.perspective[l];
+      min_inverse_w_ = group_.min_inverse_w[l];
       for (int k = 0; k < kColourPlanes; ++k)
         plane_[k] = group_.colour[k][l];
       if (normal_planes_) {
@@ -157,11 +168,7 @@ class ShadingVisitor {
     // A tile whose bound lies above every vertex depth holds a stored depth the triangle beats
     // (hidden() could only succeed within its rounding margin of the vertices' largest depth, and
     // not skipping a tile is always correct): the cheap comparison spares most tiles the test.
-    if (reject_hidden_ && !(batch_.tile_max_depth[tile_index] > max_vertex_depth_) &&
-        hidden(batch_.tile_max_depth[tile_index], px, py)) {
-      ++tiles_skipped_;
-      return;
-    }
+    if (skips_hidden_tile(tile_index, px, py)) return;
     Floats stored_max(-std::numeric_limits<float>::infinity());  // depth after the writes
     ColumnTerms columns;
     set_up_tile_columns(px, columns);
@@ -181,6 +188,118 @@ class ShadingVisitor {
       });
     }
     if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
+  }
+
+  // A tile of a multisampled target (walk_sample_tiles): masks[k] is sample k's coverage, and
+  // sample k of the tile is the 64 values from (tile * samples + k) * 64 (framebuffer.hpp). Each
+  // covered sample's depth is tested, and written, at its own position; each pixel with a sample
+  // that passed is shaded once, at its centre, and that colour written to those samples.
+  void sample_tile(std::uint32_t tile_x, std::uint32_t tile_y,
+                   std::span<const std::uint64_t> masks) {
+    const std::size_t samples = masks.size();
+    const std::size_t tile_index =
+        static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(batch_.tiles_x) + tile_x;
+    float* depth = batch_.depth_tiles + tile_index * samples * 64;
+    std::uint32_t* color = batch_.color_tiles + tile_index * samples * 64;
+    const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
+    const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
+    for (std::uint64_t mask : masks)
+      fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
+    if (skips_hidden_tile(tile_index, px, py)) return;
+    std::uint64_t passed[kMaxPatternSamples];
+    std::uint64_t written = 0;
+    with_depth_test([&](auto test) {
+      for (std::size_t k = 0; k < samples; ++k) {
+        passed[k] = sample_depth_test<decltype(test)::value>(masks[k], depth + k * 64, px, py,
+                                                             pattern_[k]);
+        written |= passed[k];
+      }
+    });
+    // The tile's bound anew from every sample's depth: the writes may have lowered it (so that
+    // hierarchical depth can skip the tile for a triangle behind) or, under the other tests,
+    // raised it.
+    if (keep_bounds_ && written != 0) {
+      Floats stored_max(-std::numeric_limits<float>::infinity());
+      for (std::size_t k = 0; k < samples; ++k) {
+        for (int row = 0; row < kTileSize; ++row)
+          keep_row_bound(depth + k * 64, row, stored_max);
+      }
+      batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
+    }
+    if (written == 0) return;
+    ColumnTerms columns;
+    set_up_tile_columns(px, columns);
+    if (colour_planes_ && tile_y != row_bases_tile_y_) {
+      set_up_colour_rows(py, row_bases_);
+      row_bases_tile_y_ = tile_y;
+    }
+    std::uint32_t rows = covered_rows(written);
+    if (textured_) {
+      texture_.sample_rows(batch_, px, py, std::countr_zero(rows), 31 - std::countl_zero(rows));
+    }
+    for (; rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
+      for (std::size_t h = 0; h < kParts; ++h) {
+        Floats channel[4];
+        colour_channels(row_bases_, columns, px, py, row, h, channel);
+        if (textured_) {
+          for (int k = 0; k < 4; ++k)
+            channel[k] = channel[k] * texture_.texel(k, row, h);
+        }
+        const Ints packed = pack_rgba8_lanes<Arch>(channel);
+        const unsigned shift = static_cast<unsigned>(8 * row) + static_cast<unsigned>(h * kLanes);
+        for (std::size_t k = 0; k < samples; ++k) {
+          const std::uint32_t lanes =
+              static_cast<std::uint32_t>(passed[k] >> shift) & ((1u << kLanes) - 1);
+          if (lanes != 0) {
+            write_colour(color + k * 64, row, h, lanes_of_bits<Arch>(lanes), packed);
+          }
+        }
+      }
+    }
+  }
+
+  // One sample's depth test over a tile (`depth` its plane of the tile), at the sample's offset
+  // from each pixel centre; the depth written where it passes. Returns the samples that passed.
+  template <DepthTest Test>
+  [[gnu::always_inline]] std::uint64_t sample_depth_test(std::uint64_t mask, float* depth,
+                                                         std::int32_t px, std::int32_t py,
+                                                         SampleOffset offset) {
+    Floats column_depth[kParts];
+    for (std::size_t h = 0; h < kParts; ++h) {
+      const Floats dx =
+          (interpolation_detail::lane_centers<Arch>(px + static_cast<std::int32_t>(h * kLanes)) +
+           Floats(detail::sixteenths(offset.x))) -
+          Floats(depth_.x0);
+      column_depth[h] = Floats(depth_.dzdx) * dx;
+    }
+    std::uint64_t passed = 0;
+    for (std::uint32_t rows = covered_rows(mask); rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
+      const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
+      const Floats row_base(detail::depth_row_base(depth_, py + row, offset.y));
+      for (std::size_t h = 0; h < kParts; ++h) {
+        const std::size_t at = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
+        const Floats z = clamp01(row_base + column_depth[h]);
+        const Floats stored = Floats::load_aligned(depth + at);
+        const Mask write = lanes_of_bits<Arch>(row_mask >> (h * kLanes)) && passes<Test>(z, stored);
+        if (batch_.depth_write) xsimd::select(write, z, stored).store_aligned(depth + at);
+        passed |= std::uint64_t{bits_of_lanes<Arch>(write)} << at;
+      }
+    }
+    passed_ += static_cast<std::uint64_t>(std::popcount(passed));
+    return passed;
+  }
+
+  // Whether hierarchical depth rejects the tile at (px, py) whole, counted when it does.
+  [[gnu::always_inline]] bool skips_hidden_tile(std::size_t tile_index, std::int32_t px,
+                                                std::int32_t py) {
+    if (reject_hidden_ && !(batch_.tile_max_depth[tile_index] > max_vertex_depth_) &&
+        hidden(batch_.tile_max_depth[tile_index], px, py)) {
+      ++tiles_skipped_;
+      return true;
+    }
+    return false;
   }
 
   // The masks of a small triangle (walk_block, walk_block_16) in the N x N tiles from
@@ -231,11 +350,7 @@ class ShadingVisitor {
             tile_x + column;
         const std::int32_t tile_px = px + static_cast<std::int32_t>(column) * kTileSize;
         fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
-        if (reject_hidden_ && !(batch_.tile_max_depth[tile_index] > max_vertex_depth_) &&
-            hidden(batch_.tile_max_depth[tile_index], tile_px, tile_py)) {
-          ++tiles_skipped_;
-          continue;
-        }
+        if (skips_hidden_tile(tile_index, tile_px, tile_py)) continue;
         float* depth = batch_.depth_tiles + tile_index * 64;
         std::uint32_t* color = batch_.color_tiles + tile_index * 64;
         Floats stored_max(-std::numeric_limits<float>::infinity());
@@ -404,7 +519,8 @@ class ShadingVisitor {
         for (int k = 0; k < 4; ++k)
           channel[k] = Floats(row_term[k]) + columns.colour[k][h];
         if constexpr (Divide) {
-          const Floats w = Floats(1.0f) / (Floats(row_term[4]) + columns.colour[4][h]);
+          const Floats w = Floats(1.0f) / xsimd::max(Floats(row_term[4]) + columns.colour[4][h],
+                                                     Floats(min_inverse_w_));
           for (int k = 0; k < 4; ++k)
             channel[k] = channel[k] * w;
         }
@@ -624,28 +740,37 @@ class ShadingVisitor {
 
   static float horizontal_max(Floats v) { return lane_max<Arch>(v); }
 
-  // Whether the depth test fails at every sample of the tile at (px, py). The plane's exact
-  // value over the tile's samples is smallest at the corner its slopes point away from. Each
-  // computed depth (depth_plane.hpp: three roundings) lies within 3 u M of the exact plane,
-  // u = 2^-24, M = |z0| + |dzdy| max|dy| + |dzdx| max|dx| over the tile; `corner` (the computed
-  // row base plus the rounded dx term, summed exactly) is within u M of the computed corner
-  // depth. So every computed depth in the tile is at least corner - 7 u M; clamping to [0, 1]
-  // keeps the order. The margin below is 8 u M: M is itself computed from float differences
-  // (the reaches, each within a factor 1 +- u of the exact one), so the computed 7 u M could
-  // fall short of the exact one by about 7 u^2 M; the extra u M covers that many times over. A
-  // NaN bound compares false: such a tile is never skipped.
+  // Whether the depth test fails at every sample of the tile at (px, py). The samples lie in the
+  // rectangle from the first pixel centre moved by the pattern's least offsets to the last one
+  // moved by its largest (the centres alone with one sample), and the plane's exact value over
+  // it is smallest at the corner its slopes point away from. Each computed depth
+  // (depth_plane.hpp: three roundings) lies within 3 u M of the exact plane, u = 2^-24,
+  // M = |z0| + |dzdy| max|dy| + |dzdx| max|dx| over the rectangle; `corner` (the computed row base
+  // plus the rounded dx term, summed exactly) is within u M of the computed corner depth. So
+  // every computed depth in the tile is at least corner - 7 u M; clamping to [0, 1] keeps the
+  // order. The margin below is 8 u M: M is itself computed from float differences (the reaches,
+  // each within a factor 1 +- u of the exact one), so the computed 7 u M could fall short of the
+  // exact one by about 7 u^2 M; the extra u M covers that many times over. A NaN bound compares
+  // false: such a tile is never skipped.
   bool hidden(float bound, std::int32_t px, std::int32_t py) const {
-    const std::int32_t cx = depth_.dzdx >= 0.0f ? px : px + kTileSize - 1;
-    const std::int32_t cy = depth_.dzdy >= 0.0f ? py : py + kTileSize - 1;
-    const float corner_dx = (static_cast<float>(cx) + 0.5f) - depth_.x0;
+    const SampleReach16& r = sample_reach_;
+    const bool low_x = depth_.dzdx >= 0.0f, low_y = depth_.dzdy >= 0.0f;
+    const std::int32_t cx = low_x ? px : px + kTileSize - 1;
+    const std::int32_t cy = low_y ? py : py + kTileSize - 1;
+    const float corner_dx =
+        ((static_cast<float>(cx) + 0.5f) + detail::sixteenths(low_x ? r.x_min : r.x_max)) -
+        depth_.x0;
     const double corner =
-        static_cast<double>(detail::depth_row_base(depth_, cy)) + depth_.dzdx * corner_dx;
+        static_cast<double>(detail::depth_row_base(depth_, cy, low_y ? r.y_min : r.y_max)) +
+        depth_.dzdx * corner_dx;
     // Plain comparisons rather than std::fmax/fmin, which compile to library calls; they give
     // the same values here (the reaches are finite, and a NaN corner becomes 0 either way).
-    const double reach_x = larger(std::fabs((static_cast<float>(px) + 0.5f) - depth_.x0),
-                                  std::fabs((static_cast<float>(px) + 7.5f) - depth_.x0));
-    const double reach_y = larger(std::fabs((static_cast<float>(py) + 0.5f) - depth_.y0),
-                                  std::fabs((static_cast<float>(py) + 7.5f) - depth_.y0));
+    const double reach_x = larger(
+        std::fabs(((static_cast<float>(px) + 0.5f) + detail::sixteenths(r.x_min)) - depth_.x0),
+        std::fabs(((static_cast<float>(px) + 7.5f) + detail::sixteenths(r.x_max)) - depth_.x0));
+    const double reach_y = larger(
+        std::fabs(((static_cast<float>(py) + 0.5f) + detail::sixteenths(r.y_min)) - depth_.y0),
+        std::fabs(((static_cast<float>(py) + 7.5f) + detail::sixteenths(r.y_max)) - depth_.y0));
     const double margin = 8.0 * 0x1p-24 *
                           (std::fabs(depth_.z0) + std::fabs(depth_.dzdy) * reach_y +
                            std::fabs(depth_.dzdx) * reach_x);
@@ -669,7 +794,8 @@ class ShadingVisitor {
   // channel and pixel instead of weights, then colours). Each channel, scaled to 0 .. 255, is
   // value(px, py) = (at_vertex + dy_slope * dy) + dx_slope * dx with the depth formula's exact dx,
   // dy; perspective-correct, channels are planes of value / w, divided per pixel by the plane of
-  // 1 / w (the fifth). Slopes come from the snapped positions in double, rounded to float once.
+  // 1 / w (the fifth), kept from falling below the smallest vertex 1 / w as the reference's
+  // weights keep it. Slopes come from the snapped positions in double, rounded to float once.
   [[gnu::always_inline]] Ints planar_colour(const float (*row_bases)[kTileSize],
                                             const ColumnTerms& columns, int row,
                                             std::size_t h) const {
@@ -683,7 +809,8 @@ class ShadingVisitor {
     for (int k = 0; k < 4; ++k)
       channel[k] = Floats(row_bases[k][row]) + columns.colour[k][h];
     if (perspective_) {
-      const Floats w = Floats(1.0f) / (Floats(row_bases[4][row]) + columns.colour[4][h]);
+      const Floats w = Floats(1.0f) / xsimd::max(Floats(row_bases[4][row]) + columns.colour[4][h],
+                                                 Floats(min_inverse_w_));
       for (int k = 0; k < 4; ++k)
         channel[k] = channel[k] * w;
     }
@@ -759,6 +886,7 @@ class ShadingVisitor {
   std::uint32_t flat_color_ = 0;
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
+  float min_inverse_w_ = 1.0f;  // the plane of 1 / w's floor (PlaneGroup::min_inverse_w)
   ColourPlane plane_[kPlanes]{};
   // The colour planes' row terms for the tile row row_bases_tile_y_ (set_up_colour_rows()).
   static constexpr std::uint32_t kNoTileRow = UINT32_MAX;
@@ -769,6 +897,22 @@ class ShadingVisitor {
   std::uint64_t tiles_skipped_ = 0;
   std::uint64_t passed_ = 0;
   TextureTile<Arch> texture_;
+  // The target's sample pattern (empty: pixel centres) and its reach in 1/16 px.
+  struct SampleReach16 {
+    std::int32_t x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+  };
+  static constexpr std::size_t kMaxPatternSamples = 16;
+  std::span<const SampleOffset> pattern_;
+  SampleReach16 sample_reach_;
+};
+
+// The shading visitor of a multisampled target: the walks deliver every sample's masks
+// (sample_tile).
+template <class Arch, InterpolationMethod Method>
+class MultisampleShadingVisitor : public ShadingVisitor<Arch, Method> {
+ public:
+  static constexpr bool kMultisample = true;
+  using ShadingVisitor<Arch, Method>::ShadingVisitor;
 };
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

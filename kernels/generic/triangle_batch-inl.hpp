@@ -131,7 +131,7 @@ struct VisibleGroup {
   // begin_group() on the gathered lanes (the others marked invalid: they read no vertex), then
   // each triangle's begin_triangle() and walk, in submission order.
   template <class Visitor>
-  void draw(Visitor& visitor) {
+  void draw(const detail::TriangleBatch& batch, Visitor& visitor) {
     if (count == 0) return;
     for (std::size_t l = count; l < kLanes; ++l) {
       corners.valid[l] = false;
@@ -143,7 +143,7 @@ struct VisibleGroup {
     visitor.begin_group(corners, positions);
     for (std::size_t l = 0; l < count; ++l) {
       visitor.begin_triangle(triangles[l], l);
-      walk_triangle(setups[l], visitor);
+      walk_visible(batch, setups[l], visitor);
     }
     count = 0;
   }
@@ -205,7 +205,7 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
         for (std::size_t l = 0; l < kLanes; ++l) {
           if (batch.statuses != nullptr) batch.statuses[first + l] = TriangleStatus::drawn;
           visitor.begin_triangle(static_cast<std::uint32_t>(first + l), l);
-          walk_triangle(setups[l], visitor);
+          walk_visible(batch, setups[l], visitor);
         }
         continue;
       }
@@ -223,14 +223,14 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
       if (!visible[l]) continue;
       if constexpr (kGrouped) {
         gathered.add(static_cast<std::uint32_t>(t), group, corners, l, setups[l]);
-        if (gathered.count == kLanes) gathered.draw(visitor);
+        if (gathered.count == kLanes) gathered.draw(batch, visitor);
       } else {
         visitor.begin_triangle(static_cast<std::uint32_t>(t));
         walk_visible(batch, setups[l], visitor);
       }
     }
   }
-  if constexpr (kGrouped) gathered.draw(visitor);
+  if constexpr (kGrouped) gathered.draw(batch, visitor);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

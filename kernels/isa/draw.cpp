@@ -14,6 +14,12 @@ namespace {
 template <InterpolationMethod Method>
 void shade_with(const detail::ShadeBatch& batch, RasterReport& report,
                 detail::ShadeCounts& counts) {
+  if (batch.coverage.samples.size() > 1) {
+    MultisampleShadingVisitor<Arch, Method> visitor(batch);
+    run_batch(batch.coverage, visitor, report);
+    visitor.add_counts(counts);
+    return;
+  }
   ShadingVisitor<Arch, Method> visitor(batch);
   run_batch(batch.coverage, visitor, report);
   visitor.add_counts(counts);

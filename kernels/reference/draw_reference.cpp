@@ -1,10 +1,13 @@
-// The shading reference: every candidate pixel of every drawn triangle tested for coverage by the
-// reference rasterizer, depth from the shared formula (so outcomes are the fast paths' exactly),
-// and colour from the double-precision interpolation references; textured, times the
-// double-precision sampling reference at the shared queries (texture_planes.hpp).
+// The shading reference: every sample of every candidate pixel of every drawn triangle tested for
+// coverage by the reference rasterizer, depth from the shared formula at the sample (so outcomes
+// are the fast paths' exactly), and colour, once per pixel at its centre, from the
+// double-precision interpolation references; textured, times the double-precision sampling
+// reference at the shared queries (texture_planes.hpp).
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "../src/depth_plane.hpp"
 #include "../src/framebuffer_access.hpp"
@@ -87,6 +90,16 @@ std::uint32_t pack(const std::array<double, 4>& rgba) {
   return to_byte(rgba[0]) | to_byte(rgba[1]) << 8 | to_byte(rgba[2]) << 16 | to_byte(rgba[3]) << 24;
 }
 
+constexpr std::size_t kMaxSamples = 16;
+
+// Where sample k of pixel (px, py) is in the tiled storage (framebuffer.hpp).
+std::size_t sample_index(const detail::ShadeBatch& batch, std::int32_t px, std::int32_t py,
+                         std::size_t k) {
+  const std::size_t tile = static_cast<std::size_t>(py >> 3) * static_cast<std::size_t>(batch.tiles_x) +
+                           static_cast<std::size_t>(px >> 3);
+  return (tile * batch.sample_count() + k) * 64 + static_cast<std::size_t>((py & 7) * 8 + (px & 7));
+}
+
 // Keeps the framebuffer's per-tile depth bounds valid after writing depth: every tile of the clip
 // rectangle gets its bound anew from its values (the reference does not use the bounds itself).
 void rebuild_depth_bounds(const detail::ShadeBatch& batch) {
@@ -97,7 +110,9 @@ void rebuild_depth_bounds(const detail::ShadeBatch& batch) {
       const std::size_t tile =
           static_cast<std::size_t>(ty) * static_cast<std::size_t>(batch.tiles_x) +
           static_cast<std::size_t>(tx);
-      batch.tile_max_depth[tile] = detail::tile_depth_bound(&batch.depth_tiles[tile * 64]);
+      const int samples = static_cast<int>(batch.sample_count());
+      batch.tile_max_depth[tile] =
+          detail::tile_depth_bound(&batch.depth_tiles[tile * 64 * batch.sample_count()], samples);
     }
   }
 }
@@ -105,6 +120,12 @@ void rebuild_depth_bounds(const detail::ShadeBatch& batch) {
 }  // namespace
 
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
+  // One sample is the pixel centre.
+  constexpr SampleOffset kCentre[] = {{0, 0}};
+  const std::span<const SampleOffset> pattern =
+      batch.coverage.samples.empty() ? std::span<const SampleOffset>(kCentre)
+                                     : batch.coverage.samples;
+  const std::size_t samples = pattern.size();
   for_each_drawn_triangle(batch.coverage, report, [&](std::size_t t, const SnappedTriangle& tri) {
     Corner c[3];
     Vec2 p[3];
@@ -130,17 +151,22 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
     const PixelRect box = candidate_pixels(tri, batch.coverage.clip);
     for (std::int32_t py = box.y0; py < box.y1; ++py) {
       for (std::int32_t px = box.x0; px < box.x1; ++px) {
-        if (!covers(tri, px, py)) continue;
-        ++counts.fragments;
-        const std::size_t index =
-            (static_cast<std::size_t>(py >> 3) * static_cast<std::size_t>(batch.tiles_x) +
-             static_cast<std::size_t>(px >> 3)) *
-                64 +
-            static_cast<std::size_t>((py & 7) * 8 + (px & 7));
-        const float depth = detail::depth_at(plane, px, py);
-        if (!passes(batch.depth_test, depth, batch.depth_tiles[index])) continue;
-        ++counts.passed;
-        if (batch.depth_write) batch.depth_tiles[index] = depth;
+        // Each covered sample's depth tested and written; the pixel shaded once, at its centre,
+        // if any passed, and its colour written to those.
+        bool any_passed = false;
+        bool passed[kMaxSamples] = {};
+        for (std::size_t k = 0; k < samples; ++k) {
+          const SampleOffset offset = pattern[k];
+          if (!covers_sample(tri, px, py, offset)) continue;
+          ++counts.fragments;
+          const std::size_t index = sample_index(batch, px, py, k);
+          const float depth = detail::depth_at(plane, px, py, offset.x, offset.y);
+          if (!passes(batch.depth_test, depth, batch.depth_tiles[index])) continue;
+          ++counts.passed;
+          if (batch.depth_write) batch.depth_tiles[index] = depth;
+          passed[k] = any_passed = true;
+        }
+        if (!any_passed) continue;
         std::array<double, 4> rgba = shaded_colour(batch, c, px + 0.5, py + 0.5);
         if (batch.texture != nullptr) {
           const TextureQuery query =
@@ -149,7 +175,10 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
           for (int k = 0; k < 4; ++k)
             rgba[k] *= texel[k];
         }
-        batch.color_tiles[index] = pack(rgba);
+        const std::uint32_t packed = pack(rgba);
+        for (std::size_t k = 0; k < samples; ++k) {
+          if (passed[k]) batch.color_tiles[sample_index(batch, px, py, k)] = packed;
+        }
       }
     }
   });

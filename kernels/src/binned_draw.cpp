@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "binned_draw.hpp"
+#include "framebuffer_access.hpp"
 #include "texture_description.hpp"
 #include "triangle_binning.hpp"
 
@@ -132,7 +133,8 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
                               screen.indices.size() / 3,
                               call.clip,
                               options.cull,
-                              nullptr};
+                              nullptr,
+                              FramebufferAccess::sample_pattern(target)};
     bin_screen_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),
                          range_reports[range]);
   });

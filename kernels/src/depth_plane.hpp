@@ -10,6 +10,13 @@
 // multiples of 2^-8 below 2^15 in magnitude, so their differences with pixel centers need at
 // most 24 significant bits. The plane's slopes come from the snapped positions in double
 // (the cross products are exact: 25-bit differences) and are rounded to float once.
+//
+// A sample of a multisample pattern (edgewise/multisample.hpp), at (sx, sy) / 16 px from the
+// centre, takes the same formula at its own position:
+//
+//   dx = ((px + 0.5) + sx / 16) - x0,  dy = ((py + 0.5) + sy / 16) - y0,
+//
+// again exact (multiples of 2^-8 below 2^16 in magnitude); offset (0, 0) is the centre's formula.
 #pragma once
 
 #include <cstdint>
@@ -40,15 +47,21 @@ inline float clamp_depth(float z) {
   return z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;
 }
 
-// The depth at row py's start, before the dx term: z0 + dzdy * dy.
-inline float depth_row_base(const DepthPlane& plane, std::int32_t py) {
-  const float dy = (static_cast<float>(py) + 0.5f) - plane.y0;
+// A sample offset's sixteenths of a pixel as a float (exact).
+inline float sixteenths(std::int32_t offset) { return static_cast<float>(offset) * 0.0625f; }
+
+// The depth at row py's start, before the dx term: z0 + dzdy * dy; for the samples offset by
+// sy / 16 px when sy is given.
+inline float depth_row_base(const DepthPlane& plane, std::int32_t py, std::int32_t sy = 0) {
+  const float dy = ((static_cast<float>(py) + 0.5f) + sixteenths(sy)) - plane.y0;
   return plane.z0 + plane.dzdy * dy;
 }
 
-inline float depth_at(const DepthPlane& plane, std::int32_t px, std::int32_t py) {
-  const float dx = (static_cast<float>(px) + 0.5f) - plane.x0;
-  return clamp_depth(depth_row_base(plane, py) + plane.dzdx * dx);
+// The depth at pixel (px, py)'s centre, or at its sample offset by (sx, sy) / 16 px.
+inline float depth_at(const DepthPlane& plane, std::int32_t px, std::int32_t py,
+                      std::int32_t sx = 0, std::int32_t sy = 0) {
+  const float dx = ((static_cast<float>(px) + 0.5f) + sixteenths(sx)) - plane.x0;
+  return clamp_depth(depth_row_base(plane, py, sy) + plane.dzdx * dx);
 }
 
 }  // namespace edgewise::detail

@@ -2,6 +2,7 @@
 // transformed, clipped, mapped to the screen and snapped to 1/256 px, and the render state.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "edgewise/draw.hpp"
@@ -11,7 +12,9 @@
 namespace edgewise::detail {
 
 struct ShadeBatch {
-  TriangleBatch coverage;  // snapped screen positions, indices, clip rectangle, cull mode
+  // Snapped screen positions, indices, clip rectangle, cull mode, and the target's sample
+  // pattern (empty for one sample per pixel).
+  TriangleBatch coverage;
   const float* depth;      // z/w per vertex, in [0, 1]
   const float* clip_w;     // clip-space w per vertex, > 0
   const Vec4* colors;      // per vertex
@@ -37,6 +40,11 @@ struct ShadeBatch {
   const TextureDescription* texture_description = nullptr;  // the texture, flattened
   SamplerOptions sampler{};
   TextureDerivatives derivatives = TextureDerivatives::quad;
+
+  // Samples per pixel of the target (framebuffer.hpp gives the layout).
+  std::size_t sample_count() const {
+    return coverage.samples.empty() ? std::size_t{1} : coverage.samples.size();
+  }
 };
 
 struct ShadeCounts {

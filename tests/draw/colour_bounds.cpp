@@ -159,7 +159,16 @@ double plane_colour_error(const ScreenTriangle& t, const VertexAttributes& attri
       inverse_w[i] = 1.0 / t.w[i];
   }
   PlaneValue q{1.0, 0.0};
-  if (divide) q = plane_value(t, inverse_w, px, py);
+  if (divide) {
+    q = plane_value(t, inverse_w, px, py);
+    // Both sides keep the interpolated 1 / w at least the smallest vertex 1 / w, s (the kernels
+    // with s rounded to float, within 2^-24 s): max(a, b) moves by at most the larger of its
+    // arguments' moves, so max(q, s) carries the larger of the two errors. Inside the triangle
+    // q >= s exactly; outside (a multisampled pixel's centre) it may not be.
+    const double s = std::min({inverse_w[0], inverse_w[1], inverse_w[2]});
+    q.error = std::max(q.error, 0x1p-24 * s);
+    q.value = std::max(q.value, s);
+  }
   double worst = 0.0;
   for (int k = 0; k < 4; ++k) {
     double f[3];

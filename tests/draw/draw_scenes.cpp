@@ -50,16 +50,20 @@ DrawMesh mesh_of(const Scene& scene) {
 }
 
 Rendered render(Isa isa, const Scene& scene, DrawOptions options, std::int32_t width,
-                std::int32_t height) {
-  Framebuffer target(width, height);
+                std::int32_t height, int samples) {
+  Framebuffer target(width, height, samples);
   target.clear({0.1f, 0.2f, 0.3f, 1.0f}, 1.0f);
   options.isa = isa;
   Rendered out;
   out.report = draw(target, mesh_of(scene), options);
-  out.rgba.resize(static_cast<std::size_t>(width) * height * 4);
-  out.depth.resize(static_cast<std::size_t>(width) * height);
-  target.read_rgba8(out.rgba);
-  target.read_depth(out.depth);
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  out.rgba.resize(pixels * 4 * static_cast<std::size_t>(samples));
+  out.depth.resize(pixels * static_cast<std::size_t>(samples));
+  for (int k = 0; k < samples; ++k) {
+    const std::size_t at = pixels * static_cast<std::size_t>(k);
+    target.read_rgba8(std::span<std::uint8_t>(out.rgba).subspan(4 * at, 4 * pixels), k);
+    target.read_depth(std::span<float>(out.depth).subspan(at, pixels), k);
+  }
   return out;
 }
 

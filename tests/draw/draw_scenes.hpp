@@ -45,9 +45,10 @@ struct Rendered {
   std::vector<float> depth;
 };
 
-// Cleared to colour (0.1, 0.2, 0.3, 1) and depth 1, then drawn with `options` on `isa`.
+// Cleared to colour (0.1, 0.2, 0.3, 1) and depth 1, then drawn with `options` on `isa` into a
+// target with `samples` per pixel; rgba and depth hold every sample's image, sample 0's first.
 Rendered render(Isa isa, const Scene& scene, DrawOptions options, std::int32_t width,
-                std::int32_t height);
+                std::int32_t height, int samples = 1);
 
 DrawOptions perspective_options(std::int32_t width, std::int32_t height);
 
