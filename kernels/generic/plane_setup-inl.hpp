@@ -52,8 +52,8 @@ struct PlaneGroup {
   static constexpr std::size_t kLanes = kSetupLanes<Arch>;
   float x0[kLanes], y0[kLanes];  // corner 0, the planes' origin
   float z0[kLanes], dzdx[kLanes], dzdy[kLanes];
-  float max_depth[kLanes];                     // the largest vertex depth
-  bool perspective[kLanes];                    // colour divides by the plane of 1 / w
+  float max_depth[kLanes];   // the largest vertex depth
+  bool perspective[kLanes];  // colour divides by the plane of 1 / w
   // The smallest vertex 1 / w, which the plane of 1 / w is kept from falling below before the
   // division (outside the triangle, where a multisampled pixel's centre may lie, it can), as
   // the reference's perspective-correct weights keep the interpolated 1 / w.

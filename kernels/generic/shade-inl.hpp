@@ -210,8 +210,8 @@ class ShadingVisitor {
     std::uint64_t written = 0;
     with_depth_test([&](auto test) {
       for (std::size_t k = 0; k < samples; ++k) {
-        passed[k] = sample_depth_test<decltype(test)::value>(masks[k], depth + k * 64, px, py,
-                                                             pattern_[k]);
+        passed[k] =
+            sample_depth_test<decltype(test)::value>(masks[k], depth + k * 64, px, py, pattern_[k]);
         written |= passed[k];
       }
     });

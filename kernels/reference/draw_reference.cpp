@@ -95,8 +95,9 @@ constexpr std::size_t kMaxSamples = 16;
 // Where sample k of pixel (px, py) is in the tiled storage (framebuffer.hpp).
 std::size_t sample_index(const detail::ShadeBatch& batch, std::int32_t px, std::int32_t py,
                          std::size_t k) {
-  const std::size_t tile = static_cast<std::size_t>(py >> 3) * static_cast<std::size_t>(batch.tiles_x) +
-                           static_cast<std::size_t>(px >> 3);
+  const std::size_t tile =
+      static_cast<std::size_t>(py >> 3) * static_cast<std::size_t>(batch.tiles_x) +
+      static_cast<std::size_t>(px >> 3);
   return (tile * batch.sample_count() + k) * 64 + static_cast<std::size_t>((py & 7) * 8 + (px & 7));
 }
 
@@ -122,9 +123,9 @@ void rebuild_depth_bounds(const detail::ShadeBatch& batch) {
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
   // One sample is the pixel centre.
   constexpr SampleOffset kCentre[] = {{0, 0}};
-  const std::span<const SampleOffset> pattern =
-      batch.coverage.samples.empty() ? std::span<const SampleOffset>(kCentre)
-                                     : batch.coverage.samples;
+  const std::span<const SampleOffset> pattern = batch.coverage.samples.empty()
+                                                    ? std::span<const SampleOffset>(kCentre)
+                                                    : batch.coverage.samples;
   const std::size_t samples = pattern.size();
   for_each_drawn_triangle(batch.coverage, report, [&](std::size_t t, const SnappedTriangle& tri) {
     Corner c[3];

@@ -48,7 +48,9 @@ inline float clamp_depth(float z) {
 }
 
 // A sample offset's sixteenths of a pixel as a float (exact).
-inline float sixteenths(std::int32_t offset) { return static_cast<float>(offset) * 0.0625f; }
+inline float sixteenths(std::int32_t offset) {
+  return static_cast<float>(offset) * 0.0625f;
+}
 
 // The depth at row py's start, before the dx term: z0 + dzdy * dy; for the samples offset by
 // sy / 16 px when sy is given.

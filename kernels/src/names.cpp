@@ -109,6 +109,25 @@ std::span<const InterpolationMethod> values_of<InterpolationMethod>() {
   return kValues;
 }
 
+std::string_view name_of(ResolveFilter value) {
+  switch (value) {
+    case ResolveFilter::box:
+      return "box";
+    case ResolveFilter::tent:
+      return "tent";
+    case ResolveFilter::mitchell:
+      return "mitchell";
+  }
+  return "unknown";
+}
+
+template <>
+std::span<const ResolveFilter> values_of<ResolveFilter>() {
+  static constexpr ResolveFilter kValues[] = {ResolveFilter::box, ResolveFilter::tent,
+                                              ResolveFilter::mitchell};
+  return kValues;
+}
+
 std::string_view name_of(Perspective value) {
   switch (value) {
     case Perspective::correct:

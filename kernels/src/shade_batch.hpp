@@ -15,10 +15,10 @@ struct ShadeBatch {
   // Snapped screen positions, indices, clip rectangle, cull mode, and the target's sample
   // pattern (empty for one sample per pixel).
   TriangleBatch coverage;
-  const float* depth;      // z/w per vertex, in [0, 1]
-  const float* clip_w;     // clip-space w per vertex, > 0
-  const Vec4* colors;      // per vertex
-  const Vec3* normals;     // per vertex; null unless shading is diffuse
+  const float* depth;   // z/w per vertex, in [0, 1]
+  const float* clip_w;  // clip-space w per vertex, > 0
+  const Vec4* colors;   // per vertex
+  const Vec3* normals;  // per vertex; null unless shading is diffuse
   Shading shading;
   InterpolationMethod method;
   Perspective perspective;

@@ -98,8 +98,8 @@ TEST_P(MultisampleRender, OneColourPerPixelWithinTheBound) {
                     << "pixel " << x << "," << y << " sample " << k << " channel " << c << " got "
                     << int(got[c]) << " ref " << int(expected.rgba[4 * p + c]) << " t " << t
                     << " shading " << name_of(shading) << " samples " << samples << " written "
-                    << written << " tri " << tri.x[0] << "," << tri.y[0] << " " << tri.x[1]
-                    << "," << tri.y[1] << " " << tri.x[2] << "," << tri.y[2];
+                    << written << " tri " << tri.x[0] << "," << tri.y[0] << " " << tri.x[1] << ","
+                    << tri.y[1] << " " << tri.x[2] << "," << tri.y[2];
               }
               ++checked;
             }

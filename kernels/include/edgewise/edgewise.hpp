@@ -8,6 +8,7 @@
 #include "edgewise/coverage.hpp"
 #include "edgewise/multisample.hpp"
 #include "edgewise/pixel_area.hpp"
+#include "edgewise/resolve.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
