@@ -159,9 +159,11 @@ bool fetch_corners(const TriangleBatch& batch, std::size_t t, std::uint32_t corn
 // are too large, or not finite, for this estimate). Snapping moves a vertex by at most 1/512 px,
 // and pixel i is covered only when i + 0.5 lies within the snapped vertices' range, so only
 // pixels from floor(min) to floor(max) can be; one more on each side absorbs the float
-// rounding. A triangle wholly outside the clip rectangle is given the nearest bin: it covers
-// nothing there, but the bin's kernel call decides and counts its status.
-std::ptrdiff_t single_bin(const BinGrid& grid, const Vec2 v[3]) {
+// rounding. Samples of a multisample pattern, up to half a pixel from their centres
+// (`multisample`), reach one pixel further each way. A triangle wholly outside the clip rectangle
+// is given the nearest bin: it covers nothing there, but the bin's kernel call decides and counts
+// its status.
+std::ptrdiff_t single_bin(const BinGrid& grid, const Vec2 v[3], bool multisample) {
   const float min_x = std::min({v[0].x, v[1].x, v[2].x});
   const float max_x = std::max({v[0].x, v[1].x, v[2].x});
   const float min_y = std::min({v[0].y, v[1].y, v[2].y});
@@ -177,13 +179,20 @@ std::ptrdiff_t single_bin(const BinGrid& grid, const Vec2 v[3]) {
   const PixelRect& clip = grid.clip;
   const auto clamp_x = [&](std::int32_t x) { return std::clamp(x, clip.x0, clip.x1 - 1); };
   const auto clamp_y = [&](std::int32_t y) { return std::clamp(y, clip.y0, clip.y1 - 1); };
-  const std::int32_t column0 = clamp_x(floor_of(min_x) - 1) >> grid.width_shift;
-  const std::int32_t column1 = clamp_x(floor_of(max_x) + 1) >> grid.width_shift;
-  const std::int32_t row0 = clamp_y(floor_of(min_y) - 1) >> grid.height_shift;
-  const std::int32_t row1 = clamp_y(floor_of(max_y) + 1) >> grid.height_shift;
+  const std::int32_t margin = multisample ? 2 : 1;
+  const std::int32_t column0 = clamp_x(floor_of(min_x) - margin) >> grid.width_shift;
+  const std::int32_t column1 = clamp_x(floor_of(max_x) + margin) >> grid.width_shift;
+  const std::int32_t row0 = clamp_y(floor_of(min_y) - margin) >> grid.height_shift;
+  const std::int32_t row1 = clamp_y(floor_of(max_y) + margin) >> grid.height_shift;
   if (column0 != column1 || row0 != row1) return -1;
   return static_cast<std::ptrdiff_t>(row0 - grid.first_row) * grid.columns +
          (column0 - grid.first_column);
+}
+
+// How far the batch's samples reach from their pixel centres, in fixed-point units: a
+// multisample pattern's at most 8/16 px, 128 units.
+std::int32_t sample_reach(const TriangleBatch& batch) {
+  return batch.samples.size() > 1 ? 128 : 0;
 }
 
 }  // namespace
@@ -198,8 +207,7 @@ void bin_triangles(const TriangleBatch& batch, std::size_t first, std::size_t la
     if (fetch_corners(batch, t, corner)) {
       const Vec2 v[3] = {batch.vertices[corner[0]], batch.vertices[corner[1]],
                          batch.vertices[corner[2]]};
-      // A multisample pattern reaches at most 8/16 px from the centre: 128 fixed-point units.
-      status = classify_triangle(v, batch.cull, grid.clip, box, batch.samples.size() > 1 ? 128 : 0);
+      status = classify_triangle(v, batch.cull, grid.clip, box, sample_reach(batch));
     }
     if (batch.statuses != nullptr) batch.statuses[t] = status;
     if (status != TriangleStatus::drawn) {
@@ -222,13 +230,14 @@ void bin_screen_triangles(const TriangleBatch& batch, std::size_t first, std::si
     }
     const Vec2 v[3] = {batch.vertices[corner[0]], batch.vertices[corner[1]],
                        batch.vertices[corner[2]]};
-    const std::ptrdiff_t bin = single_bin(grid, v);
+    const std::ptrdiff_t bin = single_bin(grid, v, batch.samples.size() > 1);
     if (bin >= 0) {  // its status is counted by the bin's kernel call
       lists[bin].append(corner);
       continue;
     }
     PixelRect box{};
-    const TriangleStatus status = classify_triangle(v, batch.cull, grid.clip, box);
+    const TriangleStatus status =
+        classify_triangle(v, batch.cull, grid.clip, box, sample_reach(batch));
     if (status != TriangleStatus::drawn) {
       count_not_drawn(report, t, status);
       continue;

@@ -105,10 +105,11 @@ struct Frame {
   std::vector<float> depth;
 };
 
-// Every draw of `draws` into one cleared framebuffer, with `threads` (and `executor`) set.
+// Every draw of `draws` into one cleared framebuffer with `samples` per pixel, with `threads`
+// (and `executor`) set; the frame holds every sample's image, sample 0's first.
 Frame render(const std::vector<std::pair<DrawMesh, DrawOptions>>& draws, std::size_t threads,
-             const TaskExecutor& executor = {}) {
-  Framebuffer target(kWidth, kHeight);
+             const TaskExecutor& executor = {}, int samples = 1) {
+  Framebuffer target(kWidth, kHeight, samples);
   target.clear({0.1f, 0.2f, 0.3f, 1.0f}, 1.0f);
   Frame frame;
   for (auto [mesh, options] : draws) {
@@ -117,15 +118,17 @@ Frame render(const std::vector<std::pair<DrawMesh, DrawOptions>>& draws, std::si
     frame.reports.push_back(draw(target, mesh, options));
   }
   const std::size_t pixels = static_cast<std::size_t>(kWidth) * kHeight;
-  frame.color.resize(pixels);
   std::vector<std::uint8_t> rgba(pixels * 4);
-  target.read_rgba8(rgba);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    frame.color[i] = rgba[4 * i] | rgba[4 * i + 1] << 8 | rgba[4 * i + 2] << 16 |
-                     static_cast<std::uint32_t>(rgba[4 * i + 3]) << 24;
+  std::vector<float> depth(pixels);
+  for (int k = 0; k < samples; ++k) {
+    target.read_rgba8(rgba, k);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      frame.color.push_back(rgba[4 * i] | rgba[4 * i + 1] << 8 | rgba[4 * i + 2] << 16 |
+                            static_cast<std::uint32_t>(rgba[4 * i + 3]) << 24);
+    }
+    target.read_depth(depth, k);
+    frame.depth.insert(frame.depth.end(), depth.begin(), depth.end());
   }
-  frame.depth.resize(pixels);
-  target.read_depth(frame.depth);
   return frame;
 }
 
@@ -248,6 +251,22 @@ TEST_P(DrawThreads, TexturedDrawsTheSameImage) {
   // The reference samples slowly: fewer triangles.
   static const ThreadScene scene = thread_scene(13, 4200);
   expect_same_for_every_thread_count({{mesh_of(scene), options}});
+}
+
+// Multisampled targets: every sample of every pixel, as with one thread. Binning widens each
+// triangle's box by the patterns' reach, so a sample beyond its pixel centre's bin is drawn by
+// the bin that holds the pixel.
+TEST_P(DrawThreads, MultisampledDrawsTheSameImage) {
+  static const ThreadScene scene = thread_scene(17, 2100);
+  for (int samples : {4, 16}) {
+    const Frame one = render({{mesh_of(scene), base_options(isa())}}, 1, {}, samples);
+    EXPECT_GT(one.reports[0].tiles_skipped + one.reports[0].fragments_passed, 0u);
+    for (std::size_t threads : kThreadCounts) {
+      expect_same_frame(
+          one, render({{mesh_of(scene), base_options(isa())}}, threads, {}, samples),
+          std::to_string(samples) + " samples, " + std::to_string(threads) + " threads");
+    }
+  }
 }
 
 // A caller's executor: here one that runs the tasks one after the other, last first.
