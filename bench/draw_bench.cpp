@@ -10,6 +10,9 @@
 //   default: oneTBB's concurrency or EDGEWISE_THREADS), one draw() call as draw() runs it, timed
 //   in wall-clock time (the one-thread benchmarks are timed in the thread's CPU time, which on
 //   an idle machine is the same).
+// - Multisample/<isa>/samples:<n>/area:<px>: the Shading/ workload into a target with n samples per
+//   pixel (the standard patterns), 8, 64 and 1000 px; samples:1 is the Shading/ workload itself,
+//   the baseline of the same run.
 // One iteration is one draw() call over the whole set, from the vertex arrays to the written
 // pixels; the framebuffer is cleared before each call with the timer paused.
 #include <benchmark/benchmark.h>
@@ -38,6 +41,7 @@ using Clock = std::chrono::steady_clock;
 // The interpolation methods differ per fragment: compared where fragments dominate (1000 px) and
 // where per-triangle setup still shows (64 px).
 constexpr int kMethodAreas[] = {64, 1000};
+constexpr int kMultisampleAreas[] = {8, 64, 1000};
 // The sweep is 24 benchmarks per ISA: a shorter time per repetition than the suite's default
 // keeps a full five-repetition run within minutes. A call takes 10-200 ms, so each repetition
 // still averages over one to twenty calls.
@@ -60,13 +64,14 @@ std::size_t triangles_for(Isa isa, const ShadingCase& c) {
 // Why a finished run does not measure the intended work, or empty.
 std::string check(const DrawReport& report, Isa isa, std::size_t triangles, int area,
                   const Framebuffer& target) {
+  const double samples = target.samples();
   if (report.isa != isa) return "draw() ran another ISA than the one asked for";
   if (report.rasterized != triangles || report.clipped != 0 || report.culled != 0 ||
       report.outside != 0 || report.errors != 0) {
     return "not every triangle was drawn unclipped (" + std::to_string(report.rasterized) + " of " +
            std::to_string(triangles) + ")";
   }
-  const double expected = double(area) * double(triangles);
+  const double expected = double(area) * double(triangles) * samples;
   if (std::abs(double(report.fragments) - expected) > kFragmentCountTolerance * expected) {
     return "covered " + std::to_string(report.fragments) + " samples per call, expected about " +
            std::to_string(std::uint64_t(expected));
@@ -110,10 +115,10 @@ void report_draws(benchmark::State& state, const DrawReport& last, Isa isa, std:
 }
 
 void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
-                const DrawOptions& options) {
+                const DrawOptions& options, int samples = 1) {
   const std::size_t triangles = triangles_for(isa, c);
   const DrawMesh mesh = first_triangles(shading_scene(camera, c), triangles);
-  Framebuffer target(kWidth, kHeight);
+  Framebuffer target(kWidth, kHeight, samples);
 
   DrawReport last;
   double vertex_seconds = 0.0, raster_seconds = 0.0;
@@ -147,6 +152,11 @@ void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
 
 void shading(benchmark::State& state, Isa isa, ShadingCase c) {
   draw_scene(state, isa, Camera::orthographic, c, shading_options(isa, Camera::orthographic));
+}
+
+void multisample(benchmark::State& state, Isa isa, ShadingCase c, int samples) {
+  draw_scene(state, isa, Camera::orthographic, c, shading_options(isa, Camera::orthographic),
+             samples);
 }
 
 // The same workload on every core, through draw() itself: with several threads, draw() runs
@@ -215,6 +225,21 @@ void register_draw_benchmarks() {
       benchmark::RegisterBenchmark(name.c_str(), shading_all_threads, isa, c)
           ->Unit(benchmark::kMicrosecond)
           ->UseRealTime();
+    }
+  }
+  for (Isa isa : supported_isas()) {
+    if (isa == Isa::reference) continue;  // the multisample cost is the fast paths' question
+    for (const ShadingCase& c : kShadingCases) {
+      if (std::find(std::begin(kMultisampleAreas), std::end(kMultisampleAreas), c.area) ==
+          std::end(kMultisampleAreas)) {
+        continue;
+      }
+      for (int samples : {1, 2, 4, 8, 16}) {
+        const std::string name = joined(
+            {"Multisample", name_of(isa), "samples:" + std::to_string(samples), area_label(c)});
+        benchmark::RegisterBenchmark(name.c_str(), multisample, isa, c, samples)
+            ->Unit(benchmark::kMicrosecond);
+      }
     }
   }
   for (Isa isa : supported_isas()) {

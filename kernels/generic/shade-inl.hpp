@@ -215,10 +215,17 @@ class ShadingVisitor {
         written |= passed[k];
       }
     });
-    // The tile's bound anew from every sample's depth: the writes may have lowered it (so that
-    // hierarchical depth can skip the tile for a triangle behind) or, under the other tests,
-    // raised it.
-    if (keep_bounds_ && written != 0) {
+    // The tile's bound anew from every sample's depth where the writes may have raised it
+    // (tests other than less and less_equal), or where they replaced every sample (a tile the
+    // triangle covers whole): then the lower bound lets hierarchical depth skip the tile for the
+    // triangles behind. Elsewhere the old bound stays an upper bound, looser (as the 1x path
+    // leaves it for small triangles): the recount would cost more than the depth test itself.
+    bool every_sample_written = true;
+    for (std::size_t k = 0; k < samples; ++k)
+      every_sample_written = every_sample_written && passed[k] == ~std::uint64_t{0};
+    const bool may_raise =
+        batch_.depth_test != DepthTest::less && batch_.depth_test != DepthTest::less_equal;
+    if (keep_bounds_ && written != 0 && (may_raise || every_sample_written)) {
       Floats stored_max(-std::numeric_limits<float>::infinity());
       for (std::size_t k = 0; k < samples; ++k) {
         for (int row = 0; row < kTileSize; ++row)
