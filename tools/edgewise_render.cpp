@@ -2,6 +2,8 @@
 // (PNG or EXR) and prints what the pipeline did: triangles at each stage, fragments, and the time
 // of each stage. --compare-isas checks every ISA against the scalar reference on the same frame;
 // --texture textures the mesh, and --each-filter renders the frame once per texture filter.
+// --aa msaaN or ssaaN draws into a multisampled or a larger target and resolves it (resolve.hpp)
+// before writing; the resolve is timed apart from the frame.
 //
 // Timing: the framebuffer and the mesh's spans are set up once; each of the --repeat frames is a
 // clear (timed apart) followed by one draw() call, so the frame time is the draw call alone.
@@ -110,12 +112,16 @@ float clear_depth(DepthTest test) {
   return test == DepthTest::greater ? 0.0f : 1.0f;
 }
 
-Framebuffer make_framebuffer(std::int32_t width, std::int32_t height) {
+// The target --aa asks for: the image's size times the supersampling factor, with its samples.
+Framebuffer make_framebuffer(const RenderSettings& settings) {
+  const std::int32_t width = settings.width * settings.aa.supersampling;
+  const std::int32_t height = settings.height * settings.aa.supersampling;
   try {
-    return Framebuffer(width, height);
+    return Framebuffer(width, height, settings.aa.samples);
   } catch (const std::bad_alloc&) {
     throw std::runtime_error("not enough memory for a " + std::to_string(width) + "x" +
-                             std::to_string(height) + " framebuffer");
+                             std::to_string(height) + " framebuffer of " +
+                             std::to_string(settings.aa.samples) + " samples per pixel");
   }
 }
 
@@ -223,6 +229,13 @@ void print_setup(const LoadedScene& loaded, const RenderSettings& settings,
   if (texture != nullptr) {
     std::cout << "  texture   " << describe_texture(texture->loaded, texture->settings) << '\n';
   }
+  if (settings.aa.enabled()) {
+    std::cout << "  aa        " << settings.aa.name << ", " << name_of(settings.aa.resolve.filter)
+              << " resolve in linear light; drawn at " << settings.width * settings.aa.supersampling
+              << "x" << settings.height * settings.aa.supersampling << " with "
+              << settings.aa.samples << (settings.aa.samples == 1 ? " sample" : " samples")
+              << " per pixel\n";
+  }
 }
 
 void print_counts(const DrawReport& report) {
@@ -249,14 +262,27 @@ int render(const RenderSettings& settings, const LoadedScene& loaded, const Draw
   options.isa = isa;
   print_setup(loaded, settings, camera, texture, "ISA " + std::string(name_of(isa)));
 
-  Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
+  Framebuffer framebuffer = make_framebuffer(settings);
   const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
   print_counts(times.report);
 
+  // --aa: the resolved image, timed apart from the frame.
+  std::vector<std::uint8_t> resolved;
+  double resolve_seconds = 0.0;
+  if (settings.aa.enabled()) {
+    resolved.resize(static_cast<std::size_t>(settings.width) * settings.height * 4);
+    const auto resolve_start = Clock::now();
+    resolve(framebuffer, resolved, settings.aa.resolve);
+    resolve_seconds = seconds_since(resolve_start);
+  }
   double write_seconds = 0.0;
   if (settings.output) {
     const auto write_start = Clock::now();
-    write_image(*settings.output, framebuffer);
+    if (settings.aa.enabled()) {
+      write_rgba_image(*settings.output, settings.width, settings.height, resolved);
+    } else {
+      write_image(*settings.output, framebuffer);
+    }
     write_seconds = seconds_since(write_start);
   }
   std::cout << "time"
@@ -272,6 +298,10 @@ int render(const RenderSettings& settings, const LoadedScene& loaded, const Draw
              "the draw() call" + (settings.repeat > 1
                                       ? "; fastest frame " + milliseconds(times.fastest_frame)
                                       : std::string()));
+  if (settings.aa.enabled()) {
+    print_time("resolve", resolve_seconds,
+               std::string(name_of(settings.aa.resolve.filter)) + " filter, not part of the frame");
+  }
   if (settings.output) {
     print_time("image write", write_seconds, *settings.output);
   } else {
@@ -281,9 +311,21 @@ int render(const RenderSettings& settings, const LoadedScene& loaded, const Draw
   return 0;
 }
 
+// Every sample's colour and depth, sample 0's image first.
+void read_every_sample(const Framebuffer& framebuffer, std::span<std::uint8_t> rgba,
+                       std::span<float> depth) {
+  const std::size_t pixels = static_cast<std::size_t>(framebuffer.width()) *
+                             static_cast<std::size_t>(framebuffer.height());
+  for (int k = 0; k < framebuffer.samples(); ++k) {
+    const std::size_t first = pixels * static_cast<std::size_t>(k);
+    framebuffer.read_rgba8(rgba.subspan(4 * first, 4 * pixels), k);
+    framebuffer.read_depth(depth.subspan(first, pixels), k);
+  }
+}
+
 struct Difference {
-  std::uint64_t depth_mismatches = 0;  // pixels whose depth bits differ
-  std::uint64_t colour_pixels = 0;     // pixels whose colour differs
+  std::uint64_t depth_mismatches = 0;  // samples whose depth bits differ
+  std::uint64_t colour_pixels = 0;     // samples whose colour differs
   int max_colour_codes = 0;            // largest difference of one component, in 1/255
 };
 
@@ -324,15 +366,16 @@ int compare_isas(const RenderSettings& settings, const LoadedScene& loaded, cons
   DrawOptions options = draw_options(settings, camera, texture);
   print_setup(loaded, settings, camera, texture, "every supported ISA against the reference");
 
-  Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
-  const std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
-  std::vector<std::uint8_t> reference_rgba(pixels * 4), rgba(pixels * 4);
-  std::vector<float> reference_depth(pixels), depth(pixels);
+  Framebuffer framebuffer = make_framebuffer(settings);
+  const std::size_t values = static_cast<std::size_t>(framebuffer.width()) *
+                             static_cast<std::size_t>(framebuffer.height()) *
+                             static_cast<std::size_t>(framebuffer.samples());
+  std::vector<std::uint8_t> reference_rgba(values * 4), rgba(values * 4);
+  std::vector<float> reference_depth(values), depth(values);
 
   options.isa = Isa::reference;
   const FrameTimes reference = render_frames(framebuffer, mesh, options, 1);
-  framebuffer.read_rgba8(reference_rgba);
-  framebuffer.read_depth(reference_depth);
+  read_every_sample(framebuffer, reference_rgba, reference_depth);
   print_counts(reference.report);
 
   std::cout << "ISAs against the reference (frame: median of " << settings.repeat
@@ -348,8 +391,7 @@ int compare_isas(const RenderSettings& settings, const LoadedScene& loaded, cons
     if (isa == Isa::reference) continue;
     options.isa = isa;
     const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
-    framebuffer.read_rgba8(rgba);
-    framebuffer.read_depth(depth);
+    read_every_sample(framebuffer, rgba, depth);
     const Difference d = compare_images(rgba, depth, reference_rgba, reference_depth);
     const bool same = same_counts(times.report, reference.report);
     print_isa_row(
@@ -384,7 +426,7 @@ int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded
   options.isa = isa;
   print_setup(loaded, settings, camera, &texture, "ISA " + std::string(name_of(isa)));
 
-  Framebuffer framebuffer = make_framebuffer(settings.width, settings.height);
+  Framebuffer framebuffer = make_framebuffer(settings);
   std::cout << "each filter"
             << (settings.repeat > 1 ? " (median of " + std::to_string(settings.repeat) + " frames)"
                                     : std::string())

@@ -60,6 +60,7 @@ class Encoder {
     for (int c = 0; c < 255; ++c)
       thresholds_[c] = static_cast<float>(srgb_to_linear((c + 0.5) / 255.0));
   }
+  bool srgb() const { return srgb_; }
   std::uint8_t operator()(float v, bool colour) const {
     const float clamped = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // NaN: 0
     if (!srgb_ || !colour) return static_cast<std::uint8_t>(std::lrint(clamped * 255.0f));
@@ -71,6 +72,75 @@ class Encoder {
   bool srgb_;
   std::array<float, 255> thresholds_{};
 };
+
+// The box filter: every output pixel is the plain mean of the f x f x samples samples of its own
+// source block (each standard offset lies inside its pixel: weights equal, none outside), summed
+// exactly in integers, two channels per 64-bit word (each sum at most 255 f^2 samples, far below
+// 2^32 for any target that fits in memory), and rounded to nearest.
+void resolve_box(const Framebuffer& source, int f, std::span<std::uint8_t> rgba,
+                 const Encoder& encode) {
+  const std::int32_t width = source.width() / f, height = source.height() / f;
+  const auto count = static_cast<std::uint64_t>(f) * static_cast<std::uint64_t>(f) *
+                     static_cast<std::uint64_t>(source.samples());
+  const float scale = 1.0f / (255.0f * static_cast<float>(count));
+  const double inverse = 1.0 / static_cast<double>(count);
+  // The mean rounded to nearest (within 2^-40 of the exact quotient: only a mean of exactly a
+  // half may round either way), or sRGB-encoded.
+  const auto write = [&](std::int32_t x, std::int32_t y, const std::uint64_t(&sums)[4]) {
+    std::uint8_t* out = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
+    for (int k = 0; k < 4; ++k) {
+      out[k] = encode.srgb() && k < 3
+                   ? encode(static_cast<float>(sums[k]) * scale, true)
+                   : static_cast<std::uint8_t>(static_cast<double>(sums[k]) * inverse + 0.5);
+    }
+  };
+  if (f == 1) {
+    // A tile at a time: its samples' planes are consecutive (framebuffer.hpp), so the sums run
+    // over contiguous pixels, R and B in the two 16-bit halves of one lane, G and A of another
+    // (at most 16 samples of 255 each: below 2^16).
+    const std::uint32_t* tiles = source.color_tiles();
+    const auto samples = static_cast<std::size_t>(source.samples());
+    for (std::int32_t ty = 0; ty < source.tiles_y(); ++ty) {
+      for (std::int32_t tx = 0; tx < source.tiles_x(); ++tx) {
+        const std::uint32_t* tile =
+            tiles + (static_cast<std::size_t>(ty) * source.tiles_x() + tx) * samples * 64;
+        std::uint32_t red_blue[64] = {}, green_alpha[64] = {};
+        for (std::size_t k = 0; k < samples; ++k) {
+          for (std::size_t p = 0; p < 64; ++p) {
+            const std::uint32_t c = tile[k * 64 + p];
+            red_blue[p] += c & 0x00FF00FFu;
+            green_alpha[p] += (c >> 8) & 0x00FF00FFu;
+          }
+        }
+        for (std::int32_t p = 0; p < 64; ++p) {
+          const std::int32_t x = tx * 8 + p % 8, y = ty * 8 + p / 8;
+          if (x >= width || y >= height) continue;
+          const std::uint64_t sums[4] = {red_blue[p] & 0xFFFFu, green_alpha[p] & 0xFFFFu,
+                                         red_blue[p] >> 16, green_alpha[p] >> 16};
+          write(x, y, sums);
+        }
+      }
+    }
+    return;
+  }
+  for (std::int32_t y = 0; y < height; ++y) {
+    for (std::int32_t x = 0; x < width; ++x) {
+      // Channels R and B in the low and high 32 bits of `even`, G and A of `odd`.
+      std::uint64_t even = 0, odd = 0;
+      for (std::int32_t j = 0; j < f; ++j) {
+        for (std::int32_t i = 0; i < f; ++i) {
+          for (int k = 0; k < source.samples(); ++k) {
+            const std::uint64_t c = source.color(x * f + i, y * f + j, k);
+            even += (c & 0xFF) | (c & 0xFF0000) << 16;
+            odd += (c >> 8 & 0xFF) | (c >> 24 & 0xFF) << 32;
+          }
+        }
+      }
+      const std::uint64_t sums[4] = {even & 0xFFFFFFFF, odd & 0xFFFFFFFF, even >> 32, odd >> 32};
+      write(x, y, sums);
+    }
+  }
+}
 
 }  // namespace
 
@@ -125,12 +195,13 @@ void resolve(const Framebuffer& source, std::span<std::uint8_t> rgba,
     throw std::invalid_argument("resolve: the span holds " + std::to_string(rgba.size()) +
                                 " bytes, not " + std::to_string(bytes));
   }
+  const Encoder encode(options.srgb);
+  if (options.filter == ResolveFilter::box) return resolve_box(source, f, rgba, encode);
   const std::vector<Tap> taps =
       filter_taps(options.filter, f, standard_sample_pattern(source.samples()));
   std::int32_t reach = 0;  // the farthest tap from the output pixel's own source pixels
   for (const Tap& tap : taps)
     reach = std::max({reach, -tap.i, -tap.j, tap.i - (f - 1), tap.j - (f - 1)});
-  const Encoder encode(options.srgb);
   for (std::int32_t y = 0; y < height; ++y) {
     for (std::int32_t x = 0; x < width; ++x) {
       const bool interior = x * f - reach >= 0 && y * f - reach >= 0 &&

@@ -187,6 +187,36 @@ void add_texture_options(CLI::App& app, RenderCommandLine& line) {
   }
 }
 
+// msaaN or ssaaN (kAntiAliasingNames) as samples and a supersampling factor.
+AntiAliasing anti_aliasing_of(const std::string& name) {
+  AntiAliasing aa;
+  aa.name = name;
+  if (name.rfind("msaa", 0) == 0) aa.samples = std::stoi(name.substr(4));
+  if (name.rfind("ssaa", 0) == 0) aa.supersampling = std::stoi(name.substr(4));
+  aa.resolve.supersampling = aa.supersampling;
+  return aa;
+}
+
+void add_anti_aliasing_options(CLI::App& app, AntiAliasing& aa) {
+  tools::add_choice_option(
+      app, "--aa",
+      std::vector<std::string>(std::begin(kAntiAliasingNames), std::end(kAntiAliasingNames)),
+      [&aa](std::size_t i) {
+        const ResolveOptions resolve = aa.resolve;
+        aa = anti_aliasing_of(std::string(kAntiAliasingNames[i]));
+        aa.resolve.filter = resolve.filter;
+        aa.resolve.srgb = resolve.srgb;
+      },
+      "anti-aliasing: msaaN draws into a target of N samples per pixel\n"
+      "(shaded once per pixel), ssaaN at N times the size per axis\n"
+      "(shaded per sample); both resolved by --resolve (default none)")
+      ->group(kPipelineGroup);
+  tools::add_enum_option(app, "--resolve", aa.resolve.filter,
+                         "the resolve filter of --aa, in linear light: box (the pixel's\n"
+                         "samples), tent (radius 1 px) or mitchell (radius 2 px)")
+      ->group(kPipelineGroup);
+}
+
 void add_running_options(CLI::App& app, RenderSettings& settings) {
   tools::add_integer_option(app, "--repeat", settings.repeat, 1, kMaxRepeat,
                             "draw N times into the same framebuffer, report median times")
@@ -237,6 +267,7 @@ void add_options(CLI::App& app, RenderCommandLine& line) {
       "a built-in scene (default default)");
   add_camera_options(app, settings.camera);
   add_pipeline_options(app, line);
+  add_anti_aliasing_options(app, settings.aa);
   add_texture_options(app, line);
   add_running_options(app, settings);
 }
@@ -249,6 +280,23 @@ RenderSettings checked_settings(const CLI::App& app, RenderCommandLine line) {
   }
   if (settings.compare_isas && (line.isa || settings.output || line.texture.each_filter)) {
     throw UsageError("--compare-isas takes no --isa, --reference, -o or --each-filter");
+  }
+  if (app.count("--resolve") > 0 && !settings.aa.enabled()) {
+    throw UsageError("--resolve needs --aa msaaN or ssaaN");
+  }
+  if (line.texture.each_filter && settings.aa.enabled()) {
+    throw UsageError("--each-filter renders without anti-aliasing; give no --aa");
+  }
+  const std::int64_t drawn_pixels = std::int64_t{settings.width} * settings.height *
+                                    settings.aa.supersampling * settings.aa.supersampling *
+                                    settings.aa.samples;
+  if (std::int64_t{settings.width} * settings.aa.supersampling > kMaxTargetSize ||
+      std::int64_t{settings.height} * settings.aa.supersampling > kMaxTargetSize ||
+      drawn_pixels > kMaxPixels) {
+    throw UsageError("--aa " + settings.aa.name + " at " + std::to_string(settings.width) + "x" +
+                     std::to_string(settings.height) + " draws more than " +
+                     std::to_string(kMaxPixels) + " samples or a side beyond " +
+                     std::to_string(kMaxTargetSize));
   }
   if (!line.texture_source) {
     // The first option given that needs --texture.

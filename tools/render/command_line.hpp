@@ -13,6 +13,7 @@
 
 #include "edgewise/draw.hpp"
 #include "edgewise/isa.hpp"
+#include "edgewise/resolve.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
@@ -52,12 +53,26 @@ struct TextureSettings {
   bool each_filter = false;  // --each-filter: one frame per TextureFilter
 };
 
+// --aa and --resolve: how many samples each pixel takes and how they are filtered (resolve.hpp).
+struct AntiAliasing {
+  std::string name = "none";  // as --aa spells it
+  int samples = 1;            // msaaN: a multisampled target of N samples per pixel
+  int supersampling = 1;      // ssaaN: drawn at N times the size per axis
+  ResolveOptions resolve;     // --resolve; supersampling is filled in from ssaaN
+  bool enabled() const { return samples > 1 || supersampling > 1; }
+};
+
+// --aa's values, in the order --help lists them.
+inline constexpr std::string_view kAntiAliasingNames[] = {"none",   "msaa2", "msaa4", "msaa8",
+                                                          "msaa16", "ssaa2", "ssaa3", "ssaa4"};
+
 struct RenderSettings {
   std::optional<std::string> obj_path;  // --obj; otherwise the built-in scene below
   std::string scene_name = "default";   // --scene
   CameraOverrides camera;
   std::int32_t width = 1280, height = 720;
   std::optional<TextureSettings> texture;  // --texture
+  AntiAliasing aa;                         // --aa, --resolve
   // Everything but the transform, which the camera gives, and the texture, loaded after parsing.
   DrawOptions draw = [] {
     DrawOptions options;

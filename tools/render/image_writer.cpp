@@ -84,4 +84,23 @@ void write_image(const std::string& path, const Framebuffer& framebuffer) {
   }
 }
 
+void write_rgba_image(const std::string& path, std::int32_t width, std::int32_t height,
+                      std::span<const std::uint8_t> rgba) {
+  tools::ImagePixels image;
+  image.width = width;
+  image.height = height;
+  image.channels = 4;
+  if (image_format_for(path) == ImageFormat::png) {
+    image.bytes = rgba;
+    tools::write_image_file(path, image);
+    return;
+  }
+  std::vector<float> floats(rgba.size());
+  for (std::size_t i = 0; i < rgba.size(); ++i)
+    floats[i] = static_cast<float>(rgba[i]) / 255.0f;
+  image.floats = floats;
+  image.channel_names = {"R", "G", "B", "A"};
+  tools::write_image_file(path, image);
+}
+
 }  // namespace edgewise::render_tool
