@@ -193,7 +193,8 @@ class ShadingVisitor {
   // A tile of a multisampled target (walk_sample_tiles): masks[k] is sample k's coverage, and
   // sample k of the tile is the 64 values from (tile * samples + k) * 64 (framebuffer.hpp). Each
   // covered sample's depth is tested, and written, at its own position; each pixel with a sample
-  // that passed is shaded once, at its centre, and that colour written to those samples.
+  // that passed is shaded once, at its centre, and that colour written to those samples, under
+  // the lanes the depth test kept.
   void sample_tile(std::uint32_t tile_x, std::uint32_t tile_y,
                    std::span<const std::uint64_t> masks) {
     const std::size_t samples = masks.size();
@@ -206,26 +207,29 @@ class ShadingVisitor {
     for (std::uint64_t mask : masks)
       fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
     if (skips_hidden_tile(tile_index, px, py)) return;
-    std::uint64_t passed[kMaxPatternSamples];
-    std::uint64_t written = 0;
+    // Per sample, the rows with a sample that passed (bit `row`) and each row's lanes to write.
+    std::uint32_t passed_rows[kMaxPatternSamples];
+    Mask writes[kMaxPatternSamples][kTileSize][kParts];
+    std::uint32_t written_rows = 0;
+    std::uint64_t tile_passed = 0;
     with_depth_test([&](auto test) {
       for (std::size_t k = 0; k < samples; ++k) {
-        passed[k] =
-            sample_depth_test<decltype(test)::value>(masks[k], depth + k * 64, px, py, pattern_[k]);
-        written |= passed[k];
+        const std::uint64_t passed = sample_depth_test<decltype(test)::value>(
+            masks[k], depth + k * 64, px, py, pattern_[k], writes[k], passed_rows[k]);
+        tile_passed += passed;
+        written_rows |= passed_rows[k];
       }
     });
+    if (written_rows == 0) return;
+    passed_ += tile_passed;
     // The tile's bound anew from every sample's depth where the writes may have raised it
     // (tests other than less and less_equal), or where they replaced every sample (a tile the
     // triangle covers whole): then the lower bound lets hierarchical depth skip the tile for the
     // triangles behind. Elsewhere the old bound stays an upper bound, looser (as the 1x path
     // leaves it for small triangles): the recount would cost more than the depth test itself.
-    bool every_sample_written = true;
-    for (std::size_t k = 0; k < samples; ++k)
-      every_sample_written = every_sample_written && passed[k] == ~std::uint64_t{0};
     const bool may_raise =
         batch_.depth_test != DepthTest::less && batch_.depth_test != DepthTest::less_equal;
-    if (keep_bounds_ && written != 0 && (may_raise || every_sample_written)) {
+    if (keep_bounds_ && (may_raise || tile_passed == 64 * samples)) {
       Floats stored_max(-std::numeric_limits<float>::infinity());
       for (std::size_t k = 0; k < samples; ++k) {
         for (int row = 0; row < kTileSize; ++row)
@@ -233,18 +237,17 @@ class ShadingVisitor {
       }
       batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
     }
-    if (written == 0) return;
     ColumnTerms columns;
     set_up_tile_columns(px, columns);
     if (colour_planes_ && tile_y != row_bases_tile_y_) {
       set_up_colour_rows(py, row_bases_);
       row_bases_tile_y_ = tile_y;
     }
-    std::uint32_t rows = covered_rows(written);
     if (textured_) {
-      texture_.sample_rows(batch_, px, py, std::countr_zero(rows), 31 - std::countl_zero(rows));
+      texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
+                           31 - std::countl_zero(written_rows));
     }
-    for (; rows != 0; rows &= rows - 1) {
+    for (std::uint32_t rows = written_rows; rows != 0; rows &= rows - 1) {
       const int row = std::countr_zero(rows);
       for (std::size_t h = 0; h < kParts; ++h) {
         Floats channel[4];
@@ -254,24 +257,23 @@ class ShadingVisitor {
             channel[k] = channel[k] * texture_.texel(k, row, h);
         }
         const Ints packed = pack_rgba8_lanes<Arch>(channel);
-        const unsigned shift = static_cast<unsigned>(8 * row) + static_cast<unsigned>(h * kLanes);
         for (std::size_t k = 0; k < samples; ++k) {
-          const std::uint32_t lanes =
-              static_cast<std::uint32_t>(passed[k] >> shift) & ((1u << kLanes) - 1);
-          if (lanes != 0) {
-            write_colour(color + k * 64, row, h, lanes_of_bits<Arch>(lanes), packed);
-          }
+          if ((passed_rows[k] >> row) & 1u)
+            write_colour(color + k * 64, row, h, writes[k][row][h], packed);
         }
       }
     }
   }
 
   // One sample's depth test over a tile (`depth` its plane of the tile), at the sample's offset
-  // from each pixel centre; the depth written where it passes. Returns the samples that passed.
+  // from each pixel centre; the depth written where it passes. Fills `writes` for the rows of
+  // `passed_rows` (the rows where some lane passed) and returns how many passed.
   template <DepthTest Test>
   [[gnu::always_inline]] std::uint64_t sample_depth_test(std::uint64_t mask, float* depth,
                                                          std::int32_t px, std::int32_t py,
-                                                         SampleOffset offset) {
+                                                         SampleOffset offset,
+                                                         Mask (*writes)[kParts],
+                                                         std::uint32_t& passed_rows) {
     Floats column_depth[kParts];
     for (std::size_t h = 0; h < kParts; ++h) {
       const Floats dx =
@@ -281,20 +283,24 @@ class ShadingVisitor {
       column_depth[h] = Floats(depth_.dzdx) * dx;
     }
     std::uint64_t passed = 0;
+    passed_rows = 0;
     for (std::uint32_t rows = covered_rows(mask); rows != 0; rows &= rows - 1) {
       const int row = std::countr_zero(rows);
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
       const Floats row_base(detail::depth_row_base(depth_, py + row, offset.y));
+      std::uint32_t any = 0;
       for (std::size_t h = 0; h < kParts; ++h) {
         const std::size_t at = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
         const Floats z = clamp01(row_base + column_depth[h]);
         const Floats stored = Floats::load_aligned(depth + at);
         const Mask write = lanes_of_bits<Arch>(row_mask >> (h * kLanes)) && passes<Test>(z, stored);
         if (batch_.depth_write) xsimd::select(write, z, stored).store_aligned(depth + at);
-        passed |= std::uint64_t{bits_of_lanes<Arch>(write)} << at;
+        writes[row][h] = write;
+        any |= bits_of_lanes<Arch>(write);
+        passed += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
       }
+      passed_rows |= (any != 0 ? 1u : 0u) << row;
     }
-    passed_ += static_cast<std::uint64_t>(std::popcount(passed));
     return passed;
   }
 
