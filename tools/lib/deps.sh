@@ -36,10 +36,10 @@ EDGEWISE_CHECK_HOST_PACKAGES=(
   "${EDGEWISE_DEMO_PACKAGES[@]}"
   libgtest-dev     # GoogleTest: the test suite
   libbenchmark-dev # Google Benchmark: edgewise-bench, built with everything else
-  libegl-dev       # EGL (headers, libEGL): edgewise-bench's llvmpipe peer, DrawPeer/
-  libopengl-dev    # libOpenGL, the peer's GL entry points (CMake's FindOpenGL needs it with EGL)
-  libgl-dev        # GL/glcorearb.h, the peer's GL declarations
-  libgl1-mesa-dri  # Mesa's llvmpipe, the renderer DrawPeer/ measures (when it runs)
+  libegl-dev       # EGL (headers, libEGL): llvmpipe for edgewise-bench's DrawPeer/ and tests/peer
+  libopengl-dev    # libOpenGL, their GL entry points (CMake's FindOpenGL needs it with EGL)
+  libgl-dev        # GL/glcorearb.h, their GL declarations
+  libgl1-mesa-dri  # Mesa's llvmpipe, which DrawPeer/ measures and tests/peer compares with
 )
 # The host build, then objdump and nm (binutils, from g++) read its objects.
 EDGEWISE_CHECK_ISA_OBJECTS_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")
