@@ -7,7 +7,8 @@
 // - an ISA throws where the reference does not, or anything but the documented
 //   std::invalid_argument (whose cases the input decoder predicts) escapes draw();
 // - a DrawReport count differs from the reference's, or breaks its own invariants;
-// - a depth buffer differs from the reference's in any bit (padding included);
+// - a depth buffer (every sample of a multisampled target) differs from the reference's in any
+//   bit (padding included);
 // - anything outside the scissor, outside the target (the tile padding) or outside every
 //   triangle changes from the clear values, on any ISA or the reference;
 // - (one triangle per draw, so that each pixel's writer is known) a colour differs from the
@@ -23,7 +24,8 @@
 //   u8 flags                     bits 0-1 cull (3 = none); 2 no depth write; 3 indexed;
 //                                4 scissor; 5 affine; 6 ragged corner count; 7 one colour short
 //   u8 depth test, u8 model      depth test modulo 5; shading model % 3, method / 3 % 6
-//   u8 attributes                bit 0 no colours, bit 1 no normals
+//   u8 attributes                bit 0 no colours, bit 1 no normals; bits 2-4 the target's
+//                                samples per pixel: 1, 2, 4, 8, 16 for 0-4, 1 for 5-7
 //   4 x i8 scissor               x0, y0, width, height (negative sides are inverted)
 //   u8 (+ number) clear depth    < 64: 1, < 128: 0, < 192: 0.5, else a number
 //   4 x u8 clear colour, u8 ambient (v / 255), 3 x i8 light direction (v / 64)
@@ -180,6 +182,7 @@ struct Case {
   DrawOptions options;
   Vec4 clear_color{};
   float clear_depth = 1.0f;
+  int samples = 1;  // per pixel of the target
   const char* camera = "";
   std::string part = "the whole mesh";  // or one of its triangles, drawn alone
   bool expect_invalid = false;          // draw() documents std::invalid_argument for this input
@@ -314,6 +317,8 @@ Case decode(std::span<const std::uint8_t> bytes) {
   o.shading = static_cast<Shading>(model % 3);
   o.interpolation = kInterpolationMethods[model / 3 % 6];
   const std::uint32_t attributes = in.u8();
+  constexpr int kSampleCounts[8] = {1, 2, 4, 8, 16, 1, 1, 1};
+  c.samples = kSampleCounts[attributes >> 2 & 7];
   PixelRect s;
   s.x0 = in.i8();
   s.y0 = in.i8();
@@ -395,6 +400,7 @@ struct SeedHeader {
   Shading shading;
   InterpolationMethod method;
   PixelRect scissor{0, 0, 0, 0};
+  std::uint32_t sample_code = 0;  // samples per pixel: 1, 2, 4, 8, 16 for 0-4
 };
 
 InputWriter seed_header(const SeedHeader& h) {
@@ -404,7 +410,7 @@ InputWriter seed_header(const SeedHeader& h) {
   InputWriter w;
   w.u8(static_cast<std::uint32_t>(h.width)).u8(static_cast<std::uint32_t>(h.height)).u8(h.flags);
   w.u8(static_cast<std::uint32_t>(h.test));
-  w.u8(static_cast<std::uint32_t>(h.shading) + 3 * method).u8(0);
+  w.u8(static_cast<std::uint32_t>(h.shading) + 3 * method).u8(h.sample_code << 2);
   w.i8(h.scissor.x0)
       .i8(h.scissor.y0)
       .i8(h.scissor.x1 - h.scissor.x0)
@@ -437,6 +443,24 @@ std::vector<std::vector<std::uint8_t>> seed_inputs() {
   {  // clip space (w = 1): two triangles crossing in depth
     InputWriter w = seed_header(
         {37, 29, kNoCull, DepthTest::less, Shading::gouraud, InterpolationMethod::plane_equations});
+    w.u8(0).u8(6).u8(0);
+    w.vertex({-0.9f, -0.8f, 0.2f}, 240, 16, 16, facing)
+        .vertex({0.8f, -0.6f, 0.7f}, 16, 240, 16, facing);
+    w.vertex({-0.2f, 0.9f, 0.4f}, 16, 16, 240, facing)
+        .vertex({-0.7f, 0.7f, 0.9f}, 200, 100, 50, facing);
+    w.vertex({0.9f, 0.3f, 0.1f}, 50, 200, 100, facing)
+        .vertex({0.1f, -0.9f, 0.5f}, 100, 50, 200, facing);
+    seeds.push_back(w.bytes);
+  }
+  for (std::uint32_t sample_code : {2u, 4u}) {  // the same into 4x and 16x targets
+    InputWriter w = seed_header({37,
+                                 29,
+                                 kNoCull,
+                                 DepthTest::less,
+                                 Shading::gouraud,
+                                 InterpolationMethod::plane_equations,
+                                 {0, 0, 0, 0},
+                                 sample_code});
     w.u8(0).u8(6).u8(0);
     w.vertex({-0.9f, -0.8f, 0.2f}, 240, 16, 16, facing)
         .vertex({0.8f, -0.6f, 0.7f}, 16, 240, 16, facing);
@@ -564,7 +588,8 @@ void print_texture(const Case& c) {
 
 void print_case(const Case& c) {
   const DrawOptions& o = c.options;
-  std::fprintf(stderr, "drawing %s\ntarget %dx%d", c.part.c_str(), c.width, c.height);
+  std::fprintf(stderr, "drawing %s\ntarget %dx%d, %d sample%s per pixel", c.part.c_str(), c.width,
+               c.height, c.samples, c.samples == 1 ? "" : "s");
   if (o.scissor) {
     std::fprintf(stderr, ", scissor [%d, %d) x [%d, %d)", o.scissor->x0, o.scissor->x1,
                  o.scissor->y0, o.scissor->y1);
@@ -672,7 +697,7 @@ std::string float_text(float v) {
 std::vector<Output> draw_on(const Case& c, const DrawMesh& mesh, std::span<const Isa> isas) {
   std::vector<Output> outputs;
   for (Isa isa : isas) {
-    Output out{isa, false, {}, {}, Framebuffer(c.width, c.height)};
+    Output out{isa, false, {}, {}, Framebuffer(c.width, c.height, c.samples)};
     out.target.clear(c.clear_color, c.clear_depth);
     DrawOptions options = c.options;
     options.isa = isa;
@@ -781,13 +806,18 @@ void append_pieces(const Case& c, const std::uint32_t corner[3], std::vector<Pie
 class CoverageMap final : public CoverageSink {
  public:
   CoverageMap(const Case& c, std::span<const Piece> pieces)
-      : width_(c.width), masks_(static_cast<std::size_t>(c.width) * c.height, 0) {
+      : width_(c.width),
+        height_(c.height),
+        masks_(static_cast<std::size_t>(c.width) * static_cast<std::size_t>(c.height) *
+                   static_cast<std::size_t>(c.samples),
+               0) {
     std::vector<Vec2> vertices;
     for (const Piece& p : pieces)
       vertices.insert(vertices.end(), p.snapped, p.snapped + 3);
     RasterOptions options;
     options.cull = c.options.cull;
     options.isa = Isa::reference;
+    options.samples = c.samples;
     rasterize(vertices, {}, RasterTarget{c.width, c.height, c.options.scissor}, options, *this);
   }
   void consume(std::span<const TileCoverage> tiles) override {
@@ -796,17 +826,22 @@ class CoverageMap final : public CoverageSink {
         const int bit = std::countr_zero(m);
         const std::size_t x = t.tile_x * 8u + static_cast<unsigned>(bit % 8);
         const std::size_t y = t.tile_y * 8u + static_cast<unsigned>(bit / 8);
-        masks_[y * static_cast<std::size_t>(width_) + x] |= std::uint64_t{1} << (t.triangle % 64);
+        masks_[(t.sample * static_cast<std::size_t>(height_) + y) *
+                   static_cast<std::size_t>(width_) +
+               x] |= std::uint64_t{1} << (t.triangle % 64);
       }
     }
   }
-  std::uint64_t at(std::int32_t x, std::int32_t y) const {
-    return masks_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+  // The pieces covering sample k of pixel (x, y), a bit each.
+  std::uint64_t at(std::int32_t x, std::int32_t y, int k) const {
+    return masks_[(static_cast<std::size_t>(k) * static_cast<std::size_t>(height_) +
+                   static_cast<std::size_t>(y)) *
+                      static_cast<std::size_t>(width_) +
                   static_cast<std::size_t>(x)];
   }
 
  private:
-  std::int32_t width_;
+  std::int32_t width_, height_;
   std::vector<std::uint64_t> masks_;
 };
 
@@ -908,7 +943,8 @@ void check_draw(const Case& c, std::span<const Output> outputs, std::span<const 
   const std::uint32_t clear = clear_code(c);
   const std::uint32_t clear_depth = std::bit_cast<std::uint32_t>(c.clear_depth);
   const std::size_t storage = static_cast<std::size_t>(ref.target.tiles_x()) *
-                              static_cast<std::size_t>(ref.target.tiles_y()) * 64;
+                              static_cast<std::size_t>(ref.target.tiles_y()) * 64 *
+                              static_cast<std::size_t>(c.samples);
   if (c.expect_invalid) {
     for (const Output& o : outputs) {
       for (std::size_t i = 0; i < storage; ++i) {
@@ -935,31 +971,33 @@ void check_draw(const Case& c, std::span<const Output> outputs, std::span<const 
   const PixelRect clip =
       clip_rect(RasterTarget{c.width, c.height, opt.scissor});  // valid: not expect_invalid
   const CoverageMap coverage(c, pieces);
-  for (std::int32_t y = 0; y < ref.target.tiles_y() * 8; ++y) {
-    for (std::int32_t x = 0; x < ref.target.tiles_x() * 8; ++x) {
-      const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y);
-      const bool inside = x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
-      const bool covered = inside && coverage.at(x, y) != 0;
-      const std::uint32_t ref_depth = std::bit_cast<std::uint32_t>(ref.target.depth_tiles()[i]);
-      for (const Output& o : outputs) {
-        const float z = o.target.depth_tiles()[i];
-        const std::uint32_t depth = std::bit_cast<std::uint32_t>(z);
-        const bool untouched = o.target.color_tiles()[i] == clear && depth == clear_depth;
-        const char* problem = nullptr;
-        if (depth != ref_depth) {
-          problem = "depth differs from the reference";
-        } else if (!covered && !untouched) {
-          problem = inside ? "a pixel no triangle covers changed"
-                           : "a pixel outside the scissor or the target changed";
-        } else if (depth != clear_depth && (!opt.depth_write || !(z >= 0.0f && z <= 1.0f))) {
-          problem = "a depth was written that draw() may not write";
-        }
-        if (problem != nullptr) {
-          fail(c, problem, outputs,
-               std::string(name_of(o.isa)) + " " + pixel_text(x, y) + ": colour " +
-                   hex(o.target.color_tiles()[i]) + " depth " + float_text(z) +
-                   "; reference colour " + hex(ref.target.color_tiles()[i]) + " depth " +
-                   float_text(ref.target.depth_tiles()[i]));
+  for (int k = 0; k < c.samples; ++k) {
+    for (std::int32_t y = 0; y < ref.target.tiles_y() * 8; ++y) {
+      for (std::int32_t x = 0; x < ref.target.tiles_x() * 8; ++x) {
+        const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y, k);
+        const bool inside = x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
+        const bool covered = inside && coverage.at(x, y, k) != 0;
+        const std::uint32_t ref_depth = std::bit_cast<std::uint32_t>(ref.target.depth_tiles()[i]);
+        for (const Output& o : outputs) {
+          const float z = o.target.depth_tiles()[i];
+          const std::uint32_t depth = std::bit_cast<std::uint32_t>(z);
+          const bool untouched = o.target.color_tiles()[i] == clear && depth == clear_depth;
+          const char* problem = nullptr;
+          if (depth != ref_depth) {
+            problem = "depth differs from the reference";
+          } else if (!covered && !untouched) {
+            problem = inside ? "a pixel no triangle covers changed"
+                             : "a pixel outside the scissor or the target changed";
+          } else if (depth != clear_depth && (!opt.depth_write || !(z >= 0.0f && z <= 1.0f))) {
+            problem = "a depth was written that draw() may not write";
+          }
+          if (problem != nullptr) {
+            fail(c, problem, outputs,
+                 std::string(name_of(o.isa)) + " " + pixel_text(x, y) + " sample " +
+                     std::to_string(k) + ": colour " + hex(o.target.color_tiles()[i]) + " depth " +
+                     float_text(z) + "; reference colour " + hex(ref.target.color_tiles()[i]) +
+                     " depth " + float_text(ref.target.depth_tiles()[i]));
+          }
         }
       }
     }
@@ -974,44 +1012,48 @@ void check_colours(const Case& c, std::span<const Output> outputs, std::span<con
   const PixelRect clip = clip_rect(RasterTarget{c.width, c.height, c.options.scissor});
   const CoverageMap coverage(c, pieces);
   ++stats.colour_draws;
-  for (std::int32_t y = clip.y0; y < clip.y1; ++y) {
-    for (std::int32_t x = clip.x0; x < clip.x1; ++x) {
-      const std::uint64_t writers = coverage.at(x, y);
-      if (writers == 0) continue;  // check_draw: unchanged
-      ++stats.pixels;
-      const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y);
-      const std::uint32_t expected = ref.target.color_tiles()[i];
-      for (const Output& o : outputs) {
-        const std::uint32_t actual = o.target.color_tiles()[i];
-        const int difference = code_difference(actual, expected);
-        if (difference <= 1) continue;  // every bound allows one code
-        ++stats.bounded;
-        int allowed = -1;
-        bool unchecked = false;
-        for (std::uint64_t m = writers; m != 0; m &= m - 1) {
-          const std::optional<ColourBound> a =
-              colour_bound_for(c, pieces[std::countr_zero(m)], x, y);
-          unchecked = unchecked || !a;
-          if (a) allowed = std::max(allowed, a->codes);
-        }
-        if (unchecked) continue;
-        stats.widest =
-            std::max<std::uint64_t>(stats.widest, static_cast<std::uint64_t>(difference));
-        if (difference > allowed) {
-          std::string detail = std::string(name_of(o.isa)) + " " + pixel_text(x, y) + ": colour " +
-                               hex(actual) + ", reference " + hex(expected) + " (ABGR), " +
-                               std::to_string(difference) + " codes apart, " +
-                               std::to_string(allowed) + " allowed; written by one of:";
+  // Each pixel is shaded once, at its centre: every sample's colour is held to the writer's
+  // bound at the centre.
+  for (int sample = 0; sample < c.samples; ++sample) {
+    for (std::int32_t y = clip.y0; y < clip.y1; ++y) {
+      for (std::int32_t x = clip.x0; x < clip.x1; ++x) {
+        const std::uint64_t writers = coverage.at(x, y, sample);
+        if (writers == 0) continue;  // check_draw: unchanged
+        ++stats.pixels;
+        const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y, sample);
+        const std::uint32_t expected = ref.target.color_tiles()[i];
+        for (const Output& o : outputs) {
+          const std::uint32_t actual = o.target.color_tiles()[i];
+          const int difference = code_difference(actual, expected);
+          if (difference <= 1) continue;  // every bound allows one code
+          ++stats.bounded;
+          int allowed = -1;
+          bool unchecked = false;
           for (std::uint64_t m = writers; m != 0; m &= m - 1) {
-            const Piece& p = pieces[std::countr_zero(m)];
-            char text[256];
-            for (int k = 0; k < 3; ++k) {
-              std::snprintf(text, sizeof text, "\n  (%a, %a) w %a", p.screen.x[k], p.screen.y[k],
-                            p.screen.w[k]);
-              detail += text;
-            }
+            const std::optional<ColourBound> a =
+                colour_bound_for(c, pieces[std::countr_zero(m)], x, y);
+            unchecked = unchecked || !a;
+            if (a) allowed = std::max(allowed, a->codes);
           }
-          fail(c, "a colour is outside the derived bound", outputs, detail);
+          if (unchecked) continue;
+          stats.widest =
+              std::max<std::uint64_t>(stats.widest, static_cast<std::uint64_t>(difference));
+          if (difference > allowed) {
+            std::string detail = std::string(name_of(o.isa)) + " " + pixel_text(x, y) +
+                                 ": colour " + hex(actual) + ", reference " + hex(expected) +
+                                 " (ABGR), " + std::to_string(difference) + " codes apart, " +
+                                 std::to_string(allowed) + " allowed; written by one of:";
+            for (std::uint64_t m = writers; m != 0; m &= m - 1) {
+              const Piece& p = pieces[std::countr_zero(m)];
+              char text[256];
+              for (int k = 0; k < 3; ++k) {
+                std::snprintf(text, sizeof text, "\n  (%a, %a) w %a", p.screen.x[k], p.screen.y[k],
+                              p.screen.w[k]);
+                detail += text;
+              }
+            }
+            fail(c, "a colour is outside the derived bound", outputs, detail);
+          }
         }
       }
     }
@@ -1072,59 +1114,61 @@ void check_textured_colours(const Case& c, const test::TexturedPixelCheck& check
     shaded.push_back(test::shaded_range(p.attributes, c.options.shading, c.options.ambient));
   }
   ++stats.textured_draws;
-  for (std::int32_t y = clip.y0; y < clip.y1; ++y) {
-    for (std::int32_t x = clip.x0; x < clip.x1; ++x) {
-      const std::uint64_t writers = coverage.at(x, y);
-      if (writers == 0) continue;  // check_draw: unchanged
-      ++stats.textured_pixels;
-      const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y);
-      const std::uint32_t expected = ref.target.color_tiles()[i];
-      if (std::all_of(outputs.begin(), outputs.end(),
-                      [&](const Output& o) { return o.target.color_tiles()[i] == expected; })) {
-        continue;
-      }
-      ++stats.textured_differing;
-      const std::array<std::uint8_t, 4> plain = channels_of(untextured.color_tiles()[i]);
-      std::vector<std::pair<std::size_t, WriterBound>> bounds;
-      bool unbounded = false;
-      for (std::uint64_t m = writers; m != 0 && !unbounded; m &= m - 1) {
-        const std::size_t k = static_cast<std::size_t>(std::countr_zero(m));
-        const std::optional<ColourBound> a = colour_bound_for(c, pieces[k], x, y);
-        unbounded = !a || a->codes >= 255;
-        if (unbounded) break;
-        WriterBound w;
-        w.query = detail::texture_query(planes[k], d.derivatives, x, y);
-        w.texel_bound = check.texel_bound(w.query);
-        w.colour_error = a->error;
-        w.allowed = check.allowed(w.query, plain.data(), shaded[k], a->error);
-        stats.non_finite_queries += std::isfinite(w.query.s) && std::isfinite(w.query.t) ? 0 : 1;
-        bounds.emplace_back(k, std::move(w));
-      }
-      if (unbounded) {
-        ++stats.textured_unbounded;
-        continue;
-      }
-      ++stats.textured_checked;
-      ++stats.per_filter[static_cast<int>(d.sampler.filter)];
-      for (const Output& o : outputs) {
-        const std::array<std::uint8_t, 4> got = channels_of(o.target.color_tiles()[i]);
-        double excess = std::numeric_limits<double>::infinity();
-        for (const auto& [k, w] : bounds)
-          excess = std::min(excess, test::TexturedPixelCheck::excess(w.allowed, got.data()));
-        stats.closest = std::max(stats.closest, excess);
-        if (excess <= 0.0) continue;
-        std::string detail = std::string(name_of(o.isa)) + " " + pixel_text(x, y) + ": colour " +
-                             hex(o.target.color_tiles()[i]) + ", reference " + hex(expected) +
-                             ", untextured reference " + hex(untextured.color_tiles()[i]) +
-                             " (ABGR), " + std::to_string(excess) +
-                             " codes outside the bound; written by one of:";
-        for (const auto& [k, w] : bounds)
-          detail += describe_writer(pieces[k], w);
-        fail(c,
-             o.isa == Isa::reference
-                 ? "the reference's textured colour is outside its own bound (a gap in the bound)"
-                 : "a textured colour is outside the derived bound",
-             outputs, detail);
+  for (int sample = 0; sample < c.samples; ++sample) {
+    for (std::int32_t y = clip.y0; y < clip.y1; ++y) {
+      for (std::int32_t x = clip.x0; x < clip.x1; ++x) {
+        const std::uint64_t writers = coverage.at(x, y, sample);
+        if (writers == 0) continue;  // check_draw: unchanged
+        ++stats.textured_pixels;
+        const std::size_t i = detail::FramebufferAccess::index(ref.target, x, y, sample);
+        const std::uint32_t expected = ref.target.color_tiles()[i];
+        if (std::all_of(outputs.begin(), outputs.end(),
+                        [&](const Output& o) { return o.target.color_tiles()[i] == expected; })) {
+          continue;
+        }
+        ++stats.textured_differing;
+        const std::array<std::uint8_t, 4> plain = channels_of(untextured.color_tiles()[i]);
+        std::vector<std::pair<std::size_t, WriterBound>> bounds;
+        bool unbounded = false;
+        for (std::uint64_t m = writers; m != 0 && !unbounded; m &= m - 1) {
+          const std::size_t k = static_cast<std::size_t>(std::countr_zero(m));
+          const std::optional<ColourBound> a = colour_bound_for(c, pieces[k], x, y);
+          unbounded = !a || a->codes >= 255;
+          if (unbounded) break;
+          WriterBound w;
+          w.query = detail::texture_query(planes[k], d.derivatives, x, y);
+          w.texel_bound = check.texel_bound(w.query);
+          w.colour_error = a->error;
+          w.allowed = check.allowed(w.query, plain.data(), shaded[k], a->error);
+          stats.non_finite_queries += std::isfinite(w.query.s) && std::isfinite(w.query.t) ? 0 : 1;
+          bounds.emplace_back(k, std::move(w));
+        }
+        if (unbounded) {
+          ++stats.textured_unbounded;
+          continue;
+        }
+        ++stats.textured_checked;
+        ++stats.per_filter[static_cast<int>(d.sampler.filter)];
+        for (const Output& o : outputs) {
+          const std::array<std::uint8_t, 4> got = channels_of(o.target.color_tiles()[i]);
+          double excess = std::numeric_limits<double>::infinity();
+          for (const auto& [k, w] : bounds)
+            excess = std::min(excess, test::TexturedPixelCheck::excess(w.allowed, got.data()));
+          stats.closest = std::max(stats.closest, excess);
+          if (excess <= 0.0) continue;
+          std::string detail = std::string(name_of(o.isa)) + " " + pixel_text(x, y) + ": colour " +
+                               hex(o.target.color_tiles()[i]) + ", reference " + hex(expected) +
+                               ", untextured reference " + hex(untextured.color_tiles()[i]) +
+                               " (ABGR), " + std::to_string(excess) +
+                               " codes outside the bound; written by one of:";
+          for (const auto& [k, w] : bounds)
+            detail += describe_writer(pieces[k], w);
+          fail(c,
+               o.isa == Isa::reference
+                   ? "the reference's textured colour is outside its own bound (a gap in the bound)"
+                   : "a textured colour is outside the derived bound",
+               outputs, detail);
+        }
       }
     }
   }
@@ -1139,7 +1183,8 @@ Framebuffer untextured_reference(const Case& c, std::span<const Output> outputs)
   std::vector<Output> drawn = draw_on(plain, plain.mesh(), reference);
   const Framebuffer& textured = outputs.front().target;
   const std::size_t storage = static_cast<std::size_t>(textured.tiles_x()) *
-                              static_cast<std::size_t>(textured.tiles_y()) * 64;
+                              static_cast<std::size_t>(textured.tiles_y()) * 64 *
+                              static_cast<std::size_t>(c.samples);
   for (std::size_t i = 0; i < storage; ++i) {
     if (std::bit_cast<std::uint32_t>(drawn.front().target.depth_tiles()[i]) !=
         std::bit_cast<std::uint32_t>(textured.depth_tiles()[i])) {
