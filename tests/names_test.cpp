@@ -40,6 +40,8 @@ TEST(Names, EveryEnumRoundTrips) {
   expect_names_round_trip<InterpolationMethod>(6);
   expect_names_round_trip<Perspective>(2);
   expect_names_round_trip<ResolveFilter>(3);
+  expect_names_round_trip<LineCap>(3);
+  expect_names_round_trip<LineJoin>(3);
   expect_names_round_trip<DepthTest>(5);
   expect_names_round_trip<Shading>(3);
   expect_names_round_trip<TextureDerivatives>(2);

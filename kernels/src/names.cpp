@@ -109,6 +109,42 @@ std::span<const InterpolationMethod> values_of<InterpolationMethod>() {
   return kValues;
 }
 
+std::string_view name_of(LineCap value) {
+  switch (value) {
+    case LineCap::butt:
+      return "butt";
+    case LineCap::round:
+      return "round";
+    case LineCap::square:
+      return "square";
+  }
+  return "unknown";
+}
+
+template <>
+std::span<const LineCap> values_of<LineCap>() {
+  static constexpr LineCap kValues[] = {LineCap::butt, LineCap::round, LineCap::square};
+  return kValues;
+}
+
+std::string_view name_of(LineJoin value) {
+  switch (value) {
+    case LineJoin::miter:
+      return "miter";
+    case LineJoin::round:
+      return "round";
+    case LineJoin::bevel:
+      return "bevel";
+  }
+  return "unknown";
+}
+
+template <>
+std::span<const LineJoin> values_of<LineJoin>() {
+  static constexpr LineJoin kValues[] = {LineJoin::miter, LineJoin::round, LineJoin::bevel};
+  return kValues;
+}
+
 std::string_view name_of(ResolveFilter value) {
   switch (value) {
     case ResolveFilter::box:

@@ -7,6 +7,7 @@
 #include "edgewise/isa.hpp"
 #include "edgewise/coverage.hpp"
 #include "edgewise/multisample.hpp"
+#include "edgewise/path.hpp"
 #include "edgewise/pixel_area.hpp"
 #include "edgewise/resolve.hpp"
 #include "edgewise/draw.hpp"
