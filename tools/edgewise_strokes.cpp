@@ -34,6 +34,7 @@ struct Arguments {
   ResolveFilter filter = ResolveFilter::box;
   bool srgb = false;
   std::optional<Isa> isa;
+  bool exact = false;  // --exact: coverage-weighted blending by exact area instead of samples
   std::optional<std::string> output;
 };
 
@@ -192,12 +193,17 @@ int run(const Arguments& arguments) {
   }
   const double stroke_seconds = seconds_since(start);
 
-  Framebuffer target(kWidth, kHeight, arguments.samples);
+  Framebuffer target(kWidth, kHeight, arguments.exact ? 1 : arguments.samples);
   target.clear({0.06f, 0.07f, 0.09f, 1.0f}, 1.0f);
   start = Clock::now();
   std::uint64_t samples = 0;
-  for (std::size_t i = 0; i < sheet.strokes.size(); ++i)
-    samples += paint_triangles(target, triangles[i], sheet.strokes[i].color, isa).fragments;
+  for (std::size_t i = 0; i < sheet.strokes.size(); ++i) {
+    if (arguments.exact) {
+      blend_triangle_areas(target, triangles[i], sheet.strokes[i].color, isa);
+    } else {
+      samples += paint_triangles(target, triangles[i], sheet.strokes[i].color, isa).fragments;
+    }
+  }
   const double paint_seconds = seconds_since(start);
 
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(kWidth) * kHeight * 4);
@@ -209,8 +215,11 @@ int run(const Arguments& arguments) {
   const double resolve_seconds = seconds_since(start);
 
   std::cout << "edgewise-strokes: " << sheet.strokes.size() << " strokes, " << kWidth << "x"
-            << kHeight << ", " << arguments.samples << " samples per pixel, "
-            << name_of(arguments.filter) << " resolve, ISA " << name_of(isa) << '\n'
+            << kHeight << ", "
+            << (arguments.exact ? "exact-area blending (conflation shows at the triangles' seams)"
+                                : std::to_string(arguments.samples) + " samples per pixel, " +
+                                      std::string(name_of(arguments.filter)) + " resolve")
+            << ", ISA " << name_of(isa) << '\n'
             << "  flattening   " << sheet.curves.size() << " quadratic curves at tolerance "
             << arguments.tolerance << " px: " << segments << " segments (the formula: " << formula
             << "), largest distance from the curves " << std::setprecision(3) << worst << " px\n"
@@ -242,7 +251,7 @@ int main(int argc, char** argv) {
   Arguments arguments;
   return tools::run_tool(
       argc, argv, "edgewise-strokes",
-      {"[--samples N] [--tolerance PX] [--resolve box|tent|mitchell] [--srgb] [-o FILE]"},
+      {"[--samples N | --exact] [--tolerance PX] [--resolve box|tent|mitchell] [--srgb] [-o FILE]"},
       [&arguments](CLI::App& app) {
         app.description(
             "Strokes a sheet of polylines and quadratic curves (every join and cap, widths from\n"
@@ -254,6 +263,9 @@ int main(int argc, char** argv) {
             ->type_name("PX");
         tools::add_enum_option(app, "--resolve", arguments.filter, "the resolve filter");
         app.add_flag("--srgb", arguments.srgb, "write sRGB-encoded values (else linear)");
+        app.add_flag("--exact", arguments.exact,
+                     "blend each triangle by its exact area instead (one sample per\n"
+                     "pixel): shows the conflation at the seams between a stroke's triangles");
         tools::add_isa_options(app, arguments.isa, "the ISA (default: the best of this CPU)",
                                "paint with the reference");
         app.add_option("-o", arguments.output, "write the image (PNG or EXR)")->type_name("FILE");

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "edgewise/path.hpp"
+#include "edgewise/pixel_area.hpp"
 #include "edgewise/resolve.hpp"
 #include "isa_params.hpp"
 #include "random.hpp"
@@ -280,6 +281,60 @@ TEST(Path, PaintingIsTheSameOnEveryIsa) {
     }
     EXPECT_EQ(rgba, expected) << name_of(isa);
   }
+}
+
+// Exact-area blending: each pixel moves towards the colour by its area (the reference's areas:
+// the blend's arithmetic is what is checked here), rounded once: within half a code and the
+// float arithmetic's few ulps.
+TEST(Path, BlendingByExactAreaMovesEachPixelByItsArea) {
+  const Vec2 triangle[3] = {{3.3f, 2.1f}, {27.8f, 9.6f}, {8.2f, 29.4f}};
+  Framebuffer target(32, 32);
+  target.clear({0.2f, 0.4f, 0.6f, 1.0f}, 1.0f);
+  blend_triangle_areas(target, triangle, {1.0f, 0.0f, 0.5f, 1.0f});
+  struct Areas final : AreaSink {
+    float area[32][32] = {};
+    void consume(std::span<const AreaTile> tiles) override {
+      for (const AreaTile& t : tiles) {
+        for (int i = 0; i < 64; ++i)
+          area[t.tile_y * 8 + i / 8][t.tile_x * 8 + i % 8] += t.area[i];
+      }
+    }
+  } areas;
+  RasterOptions options;
+  options.isa = Isa::reference;
+  rasterize_areas(triangle, {}, RasterTarget{32, 32, {}}, options, areas);
+  const double background[4] = {51 / 255.0, 102 / 255.0, 153 / 255.0, 1.0};
+  const double colour[4] = {1.0, 0.0, 0.5, 1.0};
+  int partial = 0;
+  for (int y = 0; y < 32; ++y) {
+    for (int x = 0; x < 32; ++x) {
+      const double a = areas.area[y][x];
+      partial += a > 0.0 && a < 1.0;
+      for (int k = 0; k < 4; ++k) {
+        const double expected = 255.0 * (background[k] + a * (colour[k] - background[k]));
+        const int got = static_cast<int>((target.color(x, y) >> (8 * k)) & 0xFF);
+        EXPECT_LE(std::abs(got - expected), 0.5 + 1e-4) << x << "," << y << " channel " << k;
+      }
+    }
+  }
+  EXPECT_GT(partial, 40);
+}
+
+// Where two triangles meet inside a pixel, each blends its own part: the background shows
+// through the seam (conflation). A white square on black, cut along its diagonal: a pixel the
+// diagonal halves gets 1 - (1 - 1/2)(1 - 1/2) = 3/4 of white, not all of it (in codes: 127.5,
+// stored as 128 (to even), then 128 + 63.5 = 191.5, stored as 192).
+TEST(Path, BlendingByExactAreaLeaksAtSharedEdges) {
+  const Vec2 square[6] = {{4, 4}, {20, 4}, {20, 20}, {4, 4}, {20, 20}, {4, 20}};
+  Framebuffer target(24, 24);
+  target.clear({0, 0, 0, 1}, 1.0f);
+  blend_triangle_areas(target, square, {1, 1, 1, 1});
+  for (int i = 5; i < 19; ++i) {
+    EXPECT_EQ(target.color(i, i) & 0xFF, 192u) << i;
+    EXPECT_EQ(target.color(i + 1, i) & 0xFF, 255u) << i;  // whole pixels: no seam
+  }
+  Framebuffer multisampled(8, 8, 4);
+  EXPECT_THROW(blend_triangle_areas(multisampled, square, {1, 1, 1, 1}), std::invalid_argument);
 }
 
 TEST(Path, RefusesBadInput) {

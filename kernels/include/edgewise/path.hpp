@@ -30,6 +30,7 @@
 #include "edgewise/draw.hpp"
 #include "edgewise/framebuffer.hpp"
 #include "edgewise/names.hpp"
+#include "edgewise/pixel_area.hpp"
 #include "edgewise/vector.hpp"
 
 namespace edgewise {
@@ -104,6 +105,17 @@ std::vector<Vec2> stroke(const Path& path, const StrokeStyle& style,
 // Throws std::invalid_argument when the point count is not a multiple of 3.
 DrawReport paint_triangles(Framebuffer& target, std::span<const Vec2> triangles, const Vec4& color,
                            std::optional<Isa> isa = std::nullopt);
+
+// Paints triangles given in pixel coordinates by their exact coverage (pixel_area.hpp): each
+// pixel a triangle touches moves towards `color` by the area a of its square inside the
+// triangle, c + a (color - c) per channel in linear light, rounded to 8 bits, triangles in
+// order. Exact for a shape drawn as one triangle, or as triangles that share no pixel; wrong
+// where triangles overlap (blended twice) or meet inside a pixel (each blends its part alone, so
+// the background shows through the seam: conflation). Strokes do both. Throws
+// std::invalid_argument for a multisampled target (use paint_triangles()) or a point count that
+// is not a multiple of 3.
+RasterReport blend_triangle_areas(Framebuffer& target, std::span<const Vec2> triangles,
+                                  const Vec4& color, std::optional<Isa> isa = std::nullopt);
 
 std::string_view name_of(LineCap value);
 template <>
