@@ -15,8 +15,12 @@
 
 namespace edgewise::detail {
 
+// Multisampled targets are drawn in bins on one thread too: a bin's samples stay in cache (see
+// BinGrid), where drawing each triangle straight into a target of several times the single-sample
+// size misses the cache at every tile (docs/DESIGN.md, "Anti-aliasing").
 bool DrawCall::binned() const {
-  return workers.threads > 1 && BinGrid(clip, workers.threads).count() > 1;
+  return (workers.threads > 1 || samples > 1) &&
+         BinGrid(clip, workers.threads, samples).count() > 1;
 }
 
 namespace {
@@ -94,7 +98,7 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
 
 void shade_in_bins(DrawCall& call, Framebuffer& target, const ScreenMesh& screen,
                    const DrawOptions& options, const TextureDescription* texture) {
-  const BinGrid grid(call.clip, call.workers.threads);
+  const BinGrid grid(call.clip, call.workers.threads, call.samples);
   const std::size_t triangles = screen.indices.size() / 3;
   const std::size_t ranges = binning_ranges(triangles, call.workers.threads);
   BinLists lists(ranges, grid.count());
@@ -112,7 +116,7 @@ void shade_in_bins(DrawCall& call, Framebuffer& target, const ScreenMesh& screen
 
 void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
                     const DrawOptions& options) {
-  const BinGrid grid(call.clip, call.workers.threads);
+  const BinGrid grid(call.clip, call.workers.threads, call.samples);
   const std::size_t triangles = call.report.triangles;
   const std::size_t ranges = binning_ranges(triangles, call.workers.threads);
   BinLists lists(ranges, grid.count());

@@ -64,6 +64,7 @@ DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const Dra
   call.kernels = &kernel_table(call.report.isa);
   call.clip = clip_rect(RasterTarget{target.width(), target.height(), options.scissor});
   call.workers = resolve_workers(options.threads, options.executor, "draw");
+  call.samples = target.samples();
   const std::size_t corners = mesh.indices.empty() ? mesh.positions.size() : mesh.indices.size();
   call.report.triangles = corners / 3;
   return call;

@@ -17,6 +17,7 @@ struct DrawCall {
   PixelRect clip;
   DrawReport report;  // isa and triangles filled in
   Workers workers;
+  int samples = 1;  // the target's samples per pixel
   bool has_work() const { return !clip.empty() && report.triangles != 0; }
   // Whether the call draws in bins on several threads (else on the calling thread alone, as
   // one kernel call: the direct path, with no binning).

@@ -30,9 +30,12 @@ BinGrid::BinGrid(const PixelRect& clip_rect, int width_bits, int height_bits)
   rows = ((clip.y1 - 1) >> height_shift) - first_row + 1;
 }
 
-BinGrid::BinGrid(const PixelRect& clip_rect, std::size_t threads) : clip(clip_rect) {
+BinGrid::BinGrid(const PixelRect& clip_rect, std::size_t threads, int samples) : clip(clip_rect) {
   for (const auto& size : kBinSizes) {
     *this = BinGrid(clip_rect, size[0], size[1]);
+    const std::size_t bytes = (std::size_t{8} * static_cast<std::size_t>(samples))
+                              << (size[0] + size[1]);
+    if (samples > 1 && bytes > kMultisampleBinBytes) continue;
     if (count() >= kBinsPerThread * threads) break;
   }
 }

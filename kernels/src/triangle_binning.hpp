@@ -23,8 +23,10 @@ struct BinGrid {
   std::int32_t first_column = 0, first_row = 0, columns = 0, rows = 0;
 
   // The largest bins of kBinSizes that still give every thread kBinsPerThread of them (the
-  // smallest when none does); measured in docs/DESIGN.md, "Threads".
-  BinGrid(const PixelRect& clip_rect, std::size_t threads);
+  // smallest when none does); measured in docs/DESIGN.md, "Threads". For a multisampled target
+  // (`samples` > 1), also no larger than keeps a bin's colour and depth within
+  // kMultisampleBinBytes, so that a bin's samples stay in the core's cache while it is drawn.
+  BinGrid(const PixelRect& clip_rect, std::size_t threads, int samples = 1);
   BinGrid(const PixelRect& clip_rect, int width_shift, int height_shift);
   std::size_t count() const { return static_cast<std::size_t>(columns) * rows; }
   PixelRect rect(std::size_t bin) const;
@@ -33,6 +35,8 @@ struct BinGrid {
 // Bin sizes as (log2 width, log2 height), largest first.
 inline constexpr int kBinSizes[][2] = {{8, 7}, {7, 7}, {7, 6}, {6, 6}};
 inline constexpr std::size_t kBinsPerThread = 8;
+// Half the 1 MiB L2 cache of a Zen 4 or Zen 5 core: 128 x 128 px at 4 samples of 8 bytes.
+inline constexpr std::size_t kMultisampleBinBytes = std::size_t{1} << 19;
 
 // The status the kernels' setup gives a triangle with these (unsnapped) vertices, computed the
 // same way in double (kernels/generic/triangle_setup-inl.hpp, setup_triangles), and for a drawn
