@@ -82,7 +82,7 @@ PeerProcess::EnvironmentChanges environment_for(PeerThreads threads) {
 }
 
 // Written samples may differ by this share (see the top of this file); the most seen is 2e-6 with
-// one sample per pixel and 4e-6 with four.
+// one sample per pixel and 3.6e-6 with four.
 constexpr double kWrittenTolerance = 1e-5;
 // Covered samples under a perspective transform (the meshes) may differ by this share: a vertex's
 // x/w and y/w, mapped to the screen and rounded to 1/256 px, land on the other side of a rounding
