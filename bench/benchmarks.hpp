@@ -32,8 +32,8 @@ void register_textured_draw_benchmarks();
 void register_mesh_draw_benchmarks();
 
 // DrawPeer/llvmpipe/<threads:1|threads:default>/<workload>: Mesa's llvmpipe drawing the Shading/
-// workloads, the trilinear TexturedDraw/ one and the MeshDraw/ meshes, when built with EGL and
-// OpenGL.
+// workloads (also into 4- and 8-sample targets, as Multisample/), the trilinear TexturedDraw/ one
+// and the MeshDraw/ meshes, when built with EGL and OpenGL.
 void register_draw_peer_benchmarks();
 
 }  // namespace edgewise::bench

@@ -1,5 +1,6 @@
 // DrawPeer/llvmpipe/<threads>/<workload>/manual_time: Mesa's llvmpipe drawing the same work as
-// Shading/<isa>/area:<px> (workload area:<px>), TexturedDraw/<isa>/trilinear/quad (workload
+// Shading/<isa>/area:<px> (workload area:<px>), Multisample/<isa>/samples:<n>/area:<px>
+// (area:<px>/samples:<n>, n = 4 or 8), TexturedDraw/<isa>/trilinear/quad (workload
 // ground_plane/trilinear), TexturedDraw/<isa>/anisotropic/quad (ground_plane/anisotropic16) and
 // MeshDraw/<isa>/<mesh> (workload mesh/<mesh>): draw_peer_workloads.hpp names the draw() calls,
 // llvmpipe_peer.hpp says how OpenGL reproduces them.
@@ -28,6 +29,16 @@
 // that close at a pixel the depth test can go either way. A larger difference, or any error (no
 // EGL, no surfaceless platform, a GL_RENDERER that is not llvmpipe), fails the benchmark with
 // SkipWithError instead of timing other work.
+//
+// Multisampled workloads (area:<px>/samples:<n>): llvmpipe draws into multisampled renderbuffers
+// of n samples, edgewise into a Framebuffer of n samples, and both count samples: GL's
+// GL_SAMPLES_PASSED counts each sample of a multisampled target that passes, and llvmpipe tests
+// depth at each sample's own position, as edgewise does. The covered counts must be equal: in the
+// peer's frame (y negated) llvmpipe's 4x positions are the standard pattern and its fill rule is
+// the top-left rule, so every sample is decided alike (tests/peer/llvmpipe_multisample_test.cpp
+// shows it sample for sample); the peer refuses a sample count the driver does not offer
+// (GL_MAX_SAMPLES is 4 in Mesa 22.3's llvmpipe, so samples:8 fails with that reason) or offers at
+// other positions. Written counts differ for the reason above, per sample.
 //
 // One iteration is one draw and glFinish(); the target is cleared (and the clear finished)
 // before each, untimed, as edgewise's benchmarks clear with the timer paused. Counters as
@@ -70,7 +81,8 @@ PeerProcess::EnvironmentChanges environment_for(PeerThreads threads) {
            threads == PeerThreads::one ? std::optional<std::string>("0") : std::nullopt}};
 }
 
-// Written samples may differ by this share (see the top of this file); the most seen is 2e-6.
+// Written samples may differ by this share (see the top of this file); the most seen is 2e-6 with
+// one sample per pixel and 3.6e-6 with four.
 constexpr double kWrittenTolerance = 1e-5;
 // Covered samples under a perspective transform (the meshes) may differ by this share: a vertex's
 // x/w and y/w, mapped to the screen and rounded to 1/256 px, land on the other side of a rounding
@@ -126,7 +138,7 @@ PeerCounts edgewise_counts(const PeerWorkload& workload) {
   static std::map<std::string, PeerCounts> cache;
   auto it = cache.find(workload.name);
   if (it != cache.end()) return it->second;
-  Framebuffer target(kWidth, kHeight);
+  Framebuffer target(kWidth, kHeight, workload.samples);
   target.clear(workload.clear_color, workload.clear_depth);
   const DrawReport report = draw(target, workload.mesh, workload.options);
   return cache[workload.name] = {report.fragments, report.fragments_passed};

@@ -1,5 +1,7 @@
 #include "draw_peer_workloads.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <functional>
 #include <map>
 #include <memory>
@@ -21,6 +23,12 @@ constexpr std::string_view kFixedNames[] = {
     "area:64",
     "area:1000",
     "area:200000",
+    "area:8/samples:4",
+    "area:8/samples:8",
+    "area:64/samples:4",
+    "area:64/samples:8",
+    "area:1000/samples:4",
+    "area:1000/samples:8",
 #if defined(EDGEWISE_BENCH_SAMPLING)
     "ground_plane/trilinear",
     "ground_plane/anisotropic16",
@@ -31,7 +39,16 @@ std::unique_ptr<PeerWorkload> build(std::string_view name) {
   auto w = std::make_unique<PeerWorkload>();
   w->name = name;
   for (const ShadingCase& c : kShadingCases) {
-    if (name != "area:" + std::to_string(c.area)) continue;
+    const std::string area = "area:" + std::to_string(c.area);
+    if (name.substr(0, name.find('/')) != area) continue;
+    if (name != area) {  // area:<px>/samples:<n>
+      constexpr std::string_view kSamples = "/samples:";
+      const std::string_view count = name.substr(area.size());
+      if (count.rfind(kSamples, 0) != 0) return nullptr;
+      const auto [end, status] =
+          std::from_chars(count.data() + kSamples.size(), count.data() + count.size(), w->samples);
+      if (status != std::errc() || end != count.data() + count.size()) return nullptr;
+    }
     const ShadingScene& scene = shading_scene(Camera::orthographic, c);
     w->mesh.positions = scene.positions;
     w->mesh.colors = scene.colors;
@@ -86,6 +103,8 @@ std::span<const std::string_view> peer_workload_names() {
 }
 
 const PeerWorkload* find_peer_workload(std::string_view name) {
+  const auto names = peer_workload_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) return nullptr;
   static std::map<std::string, std::unique_ptr<PeerWorkload>, std::less<>> cache;
   auto it = cache.find(name);
   if (it == cache.end()) it = cache.emplace(std::string(name), build(name)).first;

@@ -1,6 +1,8 @@
 // The workloads DrawPeer/ measures: the draw() calls that Shading/ and TexturedDraw/ time, by
 // name, for a peer renderer to draw from the same vertex arrays with the same settings:
 // - area:<px>: Shading/<isa>/area:<px> (shading_scene.hpp);
+// - area:<px>/samples:<n>: Multisample/<isa>/samples:<n>/area:<px>, the same triangles into a
+//   target of n samples per pixel (the standard patterns), for 8, 64 and 1000 px and n = 4, 8;
 // - ground_plane/trilinear: TexturedDraw/<isa>/trilinear/quad (bench_texture.hpp);
 // - ground_plane/anisotropic16: TexturedDraw/<isa>/anisotropic/quad, max_anisotropy 16;
 // - mesh/<name>: MeshDraw/<isa>/<name>, a real mesh (mesh_scenes.hpp), when built with the OBJ
@@ -16,9 +18,11 @@
 
 namespace edgewise::bench {
 
-// One draw() call into a kWidth x kHeight target cleared to clear_color and clear_depth.
+// One draw() call into a kWidth x kHeight target of `samples` per pixel, cleared to clear_color
+// and clear_depth.
 struct PeerWorkload {
   std::string name;  // the last part of the benchmark's name
+  int samples = 1;
   DrawMesh mesh;
   DrawOptions options;
   Vec4 clear_color;

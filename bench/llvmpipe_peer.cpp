@@ -11,8 +11,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "benchmarks.hpp"
+#include "edgewise/multisample.hpp"
 
 namespace edgewise::bench {
 namespace {
@@ -196,6 +198,42 @@ std::string unsupported(const PeerWorkload& workload) {
   return {};
 }
 
+// Whether the bound framebuffer's samples lie where edgewise's standard pattern of `count` puts
+// them, in the frame the peer draws in; the reason when not, or empty. The vertex shader negates
+// clip y, so GL's window y (lower-left origin) is edgewise's screen y (y down): a GL position
+// (gx, gy) in its pixel (glGetMultisamplefv, from the pixel's corner at the smaller window y) is
+// the offset (16 gx - 8, 16 gy - 8) sixteenths from the centre, y down, in edgewise's terms.
+// Only the set matters: the benchmark compares counts of covered samples, not which ones. Mesa
+// 22.3's llvmpipe gives exactly the standard 4x pattern (tests/peer/llvmpipe_multisample_test.cpp
+// proves sample-by-sample agreement). Any other set would decide other samples and the counts
+// could not be compared.
+std::string standard_positions(int count) {
+  if (count == 1) return {};  // pixel centres
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  const std::span<const SampleOffset> pattern = standard_sample_pattern(count);
+  std::vector<bool> taken(pattern.size(), false);
+  std::string found;
+  bool all_matched = samples == count;
+  for (GLint g = 0; g < samples; ++g) {
+    GLfloat p[2] = {};
+    glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(g), p);
+    found += " (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ")";
+    bool matched = false;
+    for (std::size_t k = 0; k < pattern.size() && !matched; ++k) {
+      if (!taken[k] && p[0] * 16.0f - 8.0f == float(pattern[k].x) &&
+          p[1] * 16.0f - 8.0f == float(pattern[k].y)) {
+        taken[k] = matched = true;
+      }
+    }
+    all_matched = all_matched && matched;
+  }
+  if (all_matched) return {};
+  return "the " + std::to_string(count) + "x sample positions," + found +
+         ", are not the standard pattern in the benchmark's frame: the covered samples would "
+         "differ";
+}
+
 }  // namespace
 
 struct LlvmpipePeer::Context {
@@ -210,6 +248,66 @@ struct LlvmpipePeer::Context {
   bool depth_write = true;
   Vec4 clear_color{};
   float clear_depth = 1.0f;
+
+  int samples = 0;  // of the target's renderbuffers; 0 while there is none
+
+  void release_target() {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteRenderbuffers(1, &color);
+    glDeleteRenderbuffers(1, &depth);
+    framebuffer = color = depth = 0;
+    samples = 0;
+  }
+
+  // The kWidth x kHeight RGBA8 + DEPTH_COMPONENT32F target with `count` samples per pixel, bound;
+  // false with the reason.
+  bool make_target(int count, std::string& error) {
+    if (samples == count) return true;
+    release_target();
+    GLint most = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &most);
+    if (count > 1 && most < count) {
+      error = "at most " + std::to_string(most) + " samples per pixel (GL_MAX_SAMPLES), " +
+              std::to_string(count) + " needed";
+      return false;
+    }
+    // glRenderbufferStorageMultisample with 0 samples is the single-sample storage.
+    const GLsizei storage_samples = count > 1 ? count : 0;
+    glGenRenderbuffers(1, &color);
+    glBindRenderbuffer(GL_RENDERBUFFER, color);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, storage_samples, GL_RGBA8, kWidth, kHeight);
+    GLint allocated = 0;  // a driver may give more samples than asked
+    glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &allocated);
+    glGenRenderbuffers(1, &depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, storage_samples, GL_DEPTH_COMPONENT32F,
+                                     kWidth, kHeight);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    const std::string what = "the RGBA8 + DEPTH_COMPONENT32F framebuffer of " +
+                             std::to_string(count) + " sample" + (count > 1 ? "s" : "");
+    if (glGetError() != GL_NO_ERROR ||
+        glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      error = what + " is incomplete";
+      release_target();
+      return false;
+    }
+    if (allocated != storage_samples) {
+      error = what + " got " + std::to_string(allocated) + " samples per pixel";
+      release_target();
+      return false;
+    }
+    if (const std::string positions = standard_positions(count); !positions.empty()) {
+      error = positions;
+      release_target();
+      return false;
+    }
+    samples = count;
+    return true;
+  }
 
   void release_workload() {
     glDeleteVertexArrays(1, &vertex_array);
@@ -226,9 +324,7 @@ struct LlvmpipePeer::Context {
     if (context != EGL_NO_CONTEXT) {
       release_workload();
       glDeleteQueries(1, &query);
-      glDeleteFramebuffers(1, &framebuffer);
-      glDeleteRenderbuffers(1, &color);
-      glDeleteRenderbuffers(1, &depth);
+      release_target();
       eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
       eglDestroyContext(display, context);
     }
@@ -308,25 +404,13 @@ std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(std::string& error) {
     return nullptr;
   }
 
-  glGenRenderbuffers(1, &c->color);
-  glBindRenderbuffer(GL_RENDERBUFFER, c->color);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kWidth, kHeight);
-  glGenRenderbuffers(1, &c->depth);
-  glBindRenderbuffer(GL_RENDERBUFFER, c->depth);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, kWidth, kHeight);
-  glGenFramebuffers(1, &c->framebuffer);
-  glBindFramebuffer(GL_FRAMEBUFFER, c->framebuffer);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, c->color);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, c->depth);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    error = "the RGBA8 + DEPTH_COMPONENT32F framebuffer is incomplete";
-    return nullptr;
-  }
+  if (!c->make_target(1, error)) return nullptr;
   glGenQueries(1, &c->query);
   // Clip space as edgewise's (camera.hpp): 0 <= z <= w, window depth z/w.
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDepthRange(0.0, 1.0);
   glEnable(GL_DEPTH_TEST);
+  glEnable(GL_MULTISAMPLE);  // the default; multisampled targets then rasterize per sample
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   if (glGetError() != GL_NO_ERROR) {
@@ -343,6 +427,10 @@ bool LlvmpipePeer::load(const PeerWorkload& workload, std::string& error) {
   c.release_workload();
   if (const std::string what = unsupported(workload); !what.empty()) {
     error = "the GL peer does not draw " + what;
+    return false;
+  }
+  if (!c.make_target(workload.samples, error)) {
+    error = renderer_ + ": " + error;
     return false;
   }
   const DrawMesh& mesh = workload.mesh;

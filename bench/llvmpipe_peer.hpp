@@ -1,7 +1,11 @@
 // Mesa's llvmpipe as a drawing peer: an OpenGL 3.3 core context on EGL's surfaceless platform
 // (EGL_MESA_platform_surfaceless: no window system; EGL_KHR_surfaceless_context: current without
 // a surface), drawing into a framebuffer object of kWidth x kHeight with GL_RGBA8 colour and
-// GL_DEPTH_COMPONENT32F depth.
+// GL_DEPTH_COMPONENT32F depth, of the workload's samples per pixel (multisampled renderbuffers
+// for more than one). A multisampled target is drawn only where the driver offers that many
+// samples (GL_MAX_SAMPLES: 4 in Mesa 22.3's llvmpipe) at exactly the positions of edgewise's
+// standard pattern, seen through the vertical flip below; it is not resolved, as edgewise's
+// draw() does not resolve.
 //
 // It draws a PeerWorkload from the same vertex arrays, uploaded once, with the same transform:
 // - clip space as edgewise's (camera.hpp): GL_ARB_clip_control's GL_ZERO_TO_ONE makes window
@@ -57,8 +61,9 @@ class LlvmpipePeer {
 
   const std::string& renderer() const { return renderer_; }
 
-  // Uploads the workload's vertices and texture and builds its program; false with the reason
-  // (a setting the peer does not reproduce, a GL error).
+  // Makes the target of the workload's sample count, uploads its vertices and texture and builds
+  // its program; false with the reason (a sample count or pattern the driver does not offer, a
+  // setting the peer does not reproduce, a GL error).
   bool load(const PeerWorkload& workload, std::string& error);
 
   // Occlusion queries (GL_SAMPLES_PASSED) over one draw each into the cleared target: with the

@@ -16,6 +16,9 @@ the scalar reference, and the comparison with published peer figures and with th
 - DrawPeer/*: Mesa's llvmpipe on the Shading/ workloads and the trilinear and anisotropic
   (max_anisotropy 16) TexturedDraw/ ones, one thread and its default threads, beside edgewise
   (the widest ISA measured): edgewise / llvmpipe;
+- Multisample/* with DrawPeer/*/threads:1/area:<px>/samples:<n>: multisampled drawing (the widest
+  ISA measured) against llvmpipe on one thread at the same sample count, and each side's cost of
+  n samples over one (edgewise's samples:1, llvmpipe's single-sample area:<px>);
 - MeshDraw/* with DrawPeer/*/mesh/*: real meshes (per-pixel diffuse, back faces culled), edgewise
   against llvmpipe per mesh on one thread and on every core, and the median ratio over the meshes.
 
@@ -67,6 +70,10 @@ DRAW_NAME = re.compile(
 PEER_NAME = re.compile(r"^SamplePeer/oiio/(?P<mode>[a-z0-9_]+)/(?P<stream>[a-z_]+)$")
 DRAW_PEER_NAME = re.compile(r"^DrawPeer/(?P<peer>[a-z0-9_]+)/threads:(?P<threads>[a-z0-9]+)/"
                             r"(?P<workload>.+?)(/manual_time)?$")
+MULTISAMPLE_NAME = re.compile(r"^Multisample/(?P<isa>[a-z0-9_]+)/samples:(?P<samples>\d+)/"
+                              r"area:(?P<area>\d+)$")
+# The drawing peer's multisampled workloads: area:<px>/samples:<n> (bench/draw_peer_workloads.hpp).
+PEER_MULTISAMPLE_WORKLOAD = re.compile(r"^area:(?P<area>\d+)/samples:(?P<samples>\d+)$")
 MESH_DRAW_NAME = re.compile(r"^MeshDraw/(?P<isa>[a-z0-9_]+)/(?P<threads>threads:all/)?"
                             r"(?P<mesh>[^/]+?)(/real_time)?$")
 # The drawing peer's workloads: the edgewise benchmark each repeats (bench/draw_peer_workloads.hpp)
@@ -111,6 +118,7 @@ def medians(benchmarks):
         elif slot["runs"]:
             keys = [k for k, v in slot["runs"][0].items() if isinstance(v, (int, float))]
             result[name] = {k: statistics.median(r[k] for r in slot["runs"] if k in r) for k in keys}
+            result[name]["time_unit"] = slot["runs"][0].get("time_unit", "ns")
     return result
 
 
@@ -406,7 +414,8 @@ def print_draw_peers(peers, shading, draws):
 
     workloads = [w for w in DRAW_PEER_WORKLOADS if any(k[1] == w for k in peers)]
     if not workloads:
-        print("drawing peer: only the meshes were measured (below)")
+        print("drawing peer: none of the Shading/ or TexturedDraw/ workloads was measured (the "
+              "meshes and multisampled workloads are below)")
         return
     measured = [isa for isa in ISA_ORDER if isa != "reference" and
                 any(edgewise_entry(w, isa) for w in workloads)]
@@ -457,6 +466,69 @@ def print_draw_peers(peers, shading, draws):
               "samples differ by 'written diff' per draw (depth rounding at near-ties)")
 
 
+def seconds(entry, clock):
+    """A median's time per iteration in seconds (`clock`: cpu_time, or real_time, which holds the
+    peer's manual times), or None for a missing or failed benchmark."""
+    if not entry or "error" in entry:
+        return None
+    unit = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[entry.get("time_unit", "ns")]
+    return entry[clock] * unit
+
+
+def print_multisample(multisample, draw_peers):
+    """Multisampled drawing: per area and sample count, edgewise's time per draw() call (the
+    widest ISA measured), llvmpipe's on one thread for the same work where it has the workload,
+    llvmpipe's time / edgewise's, and each side's time at n samples over its time at one."""
+    isas = sorted({k[2] for k in multisample}, key=isa_key)
+    isa = isas[-1] if isas else None
+    peer_counts = {}  # (area, samples) -> llvmpipe's one-thread entry; samples 1: area:<px>
+    for (peer, workload, threads), entry in draw_peers.items():
+        match = PEER_MULTISAMPLE_WORKLOAD.match(workload)
+        if peer == "llvmpipe" and threads == "1" and match:
+            peer_counts[(int(match["area"]), int(match["samples"]))] = entry
+    areas = sorted({k[0] for k in multisample if k[2] == isa} | {a for a, _ in peer_counts})
+    print(f"multisampled drawing (Multisample/{isa}, the Shading/ workload into an n-sample "
+          "target) against llvmpipe on one thread (DrawPeer/llvmpipe/threads:1/area:<px>/samples:<n>"
+          "), ms per draw; llvmpipe / edgewise > 1: edgewise faster; n / 1: the time at n samples "
+          "over the same side's single-sample time")
+    header = ["area px", "samples", f"edgewise {isa}", "cv", "edgewise n / 1", "llvmpipe 1 thread",
+              "cv", "llvmpipe n / 1", "llvmpipe / edgewise", "written diff"]
+    rows = []
+    for area in areas:
+        mine_one = seconds(multisample.get((area, 1, isa)), "cpu_time")
+        peer_one_entry = draw_peers.get(("llvmpipe", f"area:{area}", "1"))
+        peer_one = seconds(peer_one_entry, "real_time")
+        counts = sorted({k[1] for k in multisample if k[0] == area and k[2] == isa} |
+                        {n for a, n in peer_counts if a == area} | ({1} if peer_one else set()))
+        for n in counts:
+            mine_entry = multisample.get((area, n, isa))
+            peer_entry = peer_one_entry if n == 1 else peer_counts.get((area, n))
+            mine = seconds(mine_entry, "cpu_time")
+            peer = seconds(peer_entry, "real_time")
+            row = [str(area), str(n)]
+            if mine_entry and "error" in mine_entry:
+                row += ["ERROR: " + mine_entry["error"], "", ""]
+            else:
+                row += [f"{mine * 1e3:.2f}" if mine else "-",
+                        cv_cell(mine_entry) if mine else "-",
+                        ratio(mine, mine_one) if mine and mine_one else "-"]
+            if peer_entry and "error" in peer_entry:
+                row += ["ERROR: " + peer_entry["error"], "", "", "", ""]
+            else:
+                row += [f"{peer * 1e3:.2f}" if peer else "-",
+                        cv_cell(peer_entry) if peer else "-",
+                        ratio(peer, peer_one) if peer and peer_one else "-",
+                        ratio(peer, mine) if peer and mine else "-",
+                        f"{peer_entry.get('written_difference', 0):+.0f}" if peer else "-"]
+            rows.append(row)
+    print_table(header, rows)
+    print()
+    print("edgewise: CPU time of its one thread; llvmpipe: LP_NUM_THREADS=0, the process's CPU "
+          "time; neither resolves the samples. Covered samples equal edgewise's (llvmpipe's 4x "
+          "positions are the standard ones in this frame); written samples differ by 'written "
+          "diff' per draw (depth rounding at near-ties)")
+
+
 def print_meshes(meshes, draw_peers):
     """Real meshes: frame times of edgewise (one thread; every core) and llvmpipe (one thread;
     its default threads), their ratios per mesh and the median ratio over the meshes."""
@@ -468,12 +540,6 @@ def print_meshes(meshes, draw_peers):
     header = ["mesh", "triangles", "fragments", f"{isa} 1 thread", "llvmpipe 1 thread",
               "ratio 1", f"{isa} all cores", "llvmpipe default", "ratio all", "edgewise all / 1"]
     rows, ratios_one, ratios_all, scaling = [], [], [], []
-
-    def seconds(entry, clock):
-        if not entry or "error" in entry:
-            return None
-        unit = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[entry.get("time_unit", "ns")]
-        return entry[clock] * unit
 
     for name in names:
         one = meshes.get((name, isa, False))
@@ -535,12 +601,15 @@ def main(argv):
     draws = collect(results, DRAW_NAME, lambda m: (m["filter"], m["isa"], m["derivatives"]))
     draw_peers = collect(results, DRAW_PEER_NAME,
                          lambda m: (m["peer"], m["workload"], m["threads"]))
+    multisample = collect(results, MULTISAMPLE_NAME,
+                          lambda m: (int(m["area"]), int(m["samples"]), m["isa"]))
     meshes = collect(results, MESH_DRAW_NAME,
                      lambda m: (m["mesh"], m["isa"], m["threads"] is not None))
     clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
-    if not (coverage or shading or methods or samples or draws or draw_peers or meshes):
+    if not (coverage or shading or methods or samples or draws or draw_peers or multisample or
+            meshes):
         print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/*, ShadingMethod/*, Sample/*, "
-              "TexturedDraw/* or DrawPeer/* benchmarks", file=sys.stderr)
+              "TexturedDraw/*, Multisample/* or DrawPeer/* benchmarks", file=sys.stderr)
         return 1
 
     for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
@@ -551,6 +620,8 @@ def main(argv):
                                        (print_textured_draw, draws, (draws, samples)),
                                        (print_draw_peers, draw_peers,
                                         (draw_peers, shading, draws)),
+                                       (print_multisample, multisample,
+                                        (multisample, draw_peers)),
                                        (print_meshes, meshes, (meshes, draw_peers))):
         if found:
             print()
