@@ -216,7 +216,7 @@ class ShadingVisitor {
       for (std::size_t k = 0; k < samples; ++k) {
         const std::uint64_t passed = sample_depth_test<decltype(test)::value>(
             masks[k], depth + k * 64, px, py, pattern_[k], writes[k], passed_rows[k]);
-        tile_passed += passed;
+        tile_passed += static_cast<std::uint64_t>(std::popcount(passed));
         written_rows |= passed_rows[k];
       }
     });
@@ -267,7 +267,9 @@ class ShadingVisitor {
 
   // One sample's depth test over a tile (`depth` its plane of the tile), at the sample's offset
   // from each pixel centre; the depth written where it passes. Fills `writes` for the rows of
-  // `passed_rows` (the rows where some lane passed) and returns how many passed.
+  // `passed_rows` (the rows where some lane passed) and returns the samples that passed (bit
+  // y * 8 + x). The rows' depth_row_base() terms are computed a batch of rows at a time, by the
+  // same float operations.
   template <DepthTest Test>
   [[gnu::always_inline]] std::uint64_t sample_depth_test(std::uint64_t mask, float* depth,
                                                          std::int32_t px, std::int32_t py,
@@ -275,32 +277,34 @@ class ShadingVisitor {
                                                          Mask (*writes)[kParts],
                                                          std::uint32_t& passed_rows) {
     Floats column_depth[kParts];
+    alignas(64) float row_base[kTileSize];
     for (std::size_t h = 0; h < kParts; ++h) {
-      const Floats dx =
-          (interpolation_detail::lane_centers<Arch>(px + static_cast<std::int32_t>(h * kLanes)) +
-           Floats(detail::sixteenths(offset.x))) -
-          Floats(depth_.x0);
+      const auto first = static_cast<std::int32_t>(h * kLanes);
+      const Floats dx = (interpolation_detail::lane_centers<Arch>(px + first) +
+                         Floats(detail::sixteenths(offset.x))) -
+                        Floats(depth_.x0);
       column_depth[h] = Floats(depth_.dzdx) * dx;
+      const Floats dy = (interpolation_detail::lane_centers<Arch>(py + first) +
+                         Floats(detail::sixteenths(offset.y))) -
+                        Floats(depth_.y0);
+      (Floats(depth_.z0) + Floats(depth_.dzdy) * dy).store_aligned(row_base + first);
     }
     std::uint64_t passed = 0;
-    passed_rows = 0;
     for (std::uint32_t rows = covered_rows(mask); rows != 0; rows &= rows - 1) {
       const int row = std::countr_zero(rows);
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-      const Floats row_base(detail::depth_row_base(depth_, py + row, offset.y));
-      std::uint32_t any = 0;
+      const Floats base(row_base[row]);
       for (std::size_t h = 0; h < kParts; ++h) {
         const std::size_t at = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
-        const Floats z = clamp01(row_base + column_depth[h]);
+        const Floats z = clamp01(base + column_depth[h]);
         const Floats stored = Floats::load_aligned(depth + at);
         const Mask write = lanes_of_bits<Arch>(row_mask >> (h * kLanes)) && passes<Test>(z, stored);
         if (batch_.depth_write) xsimd::select(write, z, stored).store_aligned(depth + at);
         writes[row][h] = write;
-        any |= bits_of_lanes<Arch>(write);
-        passed += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
+        passed |= std::uint64_t{bits_of_lanes<Arch>(write)} << at;
       }
-      passed_rows |= (any != 0 ? 1u : 0u) << row;
     }
+    passed_rows = covered_rows(passed);
     return passed;
   }
 
