@@ -1,8 +1,6 @@
 #include "llvmpipe_peer.hpp"
 
 #define GL_GLEXT_PROTOTYPES 1
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
 #include <GL/glcorearb.h>
 
 #include <time.h>
@@ -14,6 +12,7 @@
 #include <vector>
 
 #include "benchmarks.hpp"
+#include "gl/surfaceless_gl.hpp"
 #include "edgewise/multisample.hpp"
 
 namespace edgewise::bench {
@@ -23,17 +22,6 @@ double process_cpu_seconds() {
   timespec now{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
   return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
-}
-
-bool has_word(const char* list, std::string_view word) {
-  if (list == nullptr) return false;
-  for (std::string_view rest(list); !rest.empty();) {
-    const std::size_t end = rest.find(' ');
-    if (rest.substr(0, end) == word) return true;
-    if (end == std::string_view::npos) break;
-    rest.remove_prefix(end + 1);
-  }
-  return false;
 }
 
 bool has_gl_extension(std::string_view name) {
@@ -121,44 +109,6 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum stage, const char* source, std::string& error) {
-  const GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok == GL_TRUE) return shader;
-  char log[1024] = {};
-  glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-  error = std::string("shader compilation failed: ") + log;
-  glDeleteShader(shader);
-  return 0;
-}
-
-GLuint link(const char* vertex_source, const char* fragment_source, std::string& error) {
-  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source, error);
-  if (vertex == 0) return 0;
-  const GLuint fragment = compile(GL_FRAGMENT_SHADER, fragment_source, error);
-  if (fragment == 0) {
-    glDeleteShader(vertex);
-    return 0;
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vertex);
-  glAttachShader(program, fragment);
-  glLinkProgram(program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok == GL_TRUE) return program;
-  char log[1024] = {};
-  glGetProgramInfoLog(program, sizeof log, nullptr, log);
-  error = std::string("program link failed: ") + log;
-  glDeleteProgram(program);
-  return 0;
-}
-
 template <class T>
 void upload_attribute(GLuint buffer, GLuint location, std::span<const T> values) {
   glBindBuffer(GL_ARRAY_BUFFER, buffer);
@@ -237,8 +187,7 @@ std::string standard_positions(int count) {
 }  // namespace
 
 struct LlvmpipePeer::Context {
-  EGLDisplay display = EGL_NO_DISPLAY;
-  EGLContext context = EGL_NO_CONTEXT;
+  std::unique_ptr<gl::SurfacelessGl> gl;  // destroyed after the objects below
   GLuint framebuffer = 0, color = 0, depth = 0, query = 0;
   // The loaded workload.
   GLuint vertex_array = 0, buffers[3] = {}, program = 0, texture = 0;
@@ -321,14 +270,13 @@ struct LlvmpipePeer::Context {
   }
 
   ~Context() {
-    if (context != EGL_NO_CONTEXT) {
+    if (gl) {
       release_workload();
       glDeleteQueries(1, &query);
-      release_target();
-      eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-      eglDestroyContext(display, context);
+      glDeleteFramebuffers(1, &framebuffer);
+      glDeleteRenderbuffers(1, &color);
+      glDeleteRenderbuffers(1, &depth);
     }
-    if (display != EGL_NO_DISPLAY) eglTerminate(display);
   }
 };
 
@@ -337,64 +285,9 @@ LlvmpipePeer::~LlvmpipePeer() = default;
 
 std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(std::string& error) {
   auto c = std::make_unique<Context>();
-  // Client extensions (EGL_EXT_client_extensions) name the platforms this libEGL offers.
-  const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  if (!has_word(client_extensions, "EGL_EXT_platform_base") ||
-      !has_word(client_extensions, "EGL_MESA_platform_surfaceless")) {
-    error = "EGL has no surfaceless platform (EGL_MESA_platform_surfaceless)";
-    return nullptr;
-  }
-  const auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  if (get_platform_display == nullptr) {
-    error = "EGL has no eglGetPlatformDisplayEXT";
-    return nullptr;
-  }
-  c->display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  if (c->display == EGL_NO_DISPLAY || eglInitialize(c->display, nullptr, nullptr) != EGL_TRUE) {
-    c->display = EGL_NO_DISPLAY;
-    error = "eglInitialize failed on the surfaceless platform";
-    return nullptr;
-  }
-  if (!has_word(eglQueryString(c->display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
-    error = "the EGL display has no EGL_KHR_surfaceless_context";
-    return nullptr;
-  }
-  if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) {
-    error = "EGL has no desktop OpenGL";
-    return nullptr;
-  }
-  // The surfaceless platform has pbuffer configs only: the default EGL_WINDOW_BIT would match
-  // none. Rendering goes to a framebuffer object, so the config's own buffers do not matter.
-  const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
-                                      EGL_DONT_CARE, EGL_NONE};
-  EGLConfig config = nullptr;
-  EGLint configs = 0;
-  if (eglChooseConfig(c->display, config_attributes, &config, 1, &configs) != EGL_TRUE ||
-      configs < 1) {
-    error = "no EGL config renders OpenGL";
-    return nullptr;
-  }
-  const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
-                                       3,
-                                       EGL_CONTEXT_MINOR_VERSION,
-                                       3,
-                                       EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                       EGL_NONE};
-  c->context = eglCreateContext(c->display, config, EGL_NO_CONTEXT, context_attributes);
-  if (c->context == EGL_NO_CONTEXT) {
-    error = "no OpenGL 3.3 core context";
-    return nullptr;
-  }
-  if (eglMakeCurrent(c->display, EGL_NO_SURFACE, EGL_NO_SURFACE, c->context) != EGL_TRUE) {
-    eglDestroyContext(c->display, c->context);
-    c->context = EGL_NO_CONTEXT;
-    error = "eglMakeCurrent without a surface failed";
-    return nullptr;
-  }
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string name = renderer != nullptr ? renderer : "";
+  c->gl = gl::SurfacelessGl::create(error);
+  if (!c->gl) return nullptr;
+  const std::string name = c->gl->renderer();
   if (name.rfind("llvmpipe", 0) != 0) {
     error = "GL_RENDERER is \"" + name + "\", not llvmpipe";
     return nullptr;
@@ -437,9 +330,9 @@ bool LlvmpipePeer::load(const PeerWorkload& workload, std::string& error) {
   const DrawOptions& options = workload.options;
   const bool textured = options.texture.has_value();
   const bool diffuse = !textured && options.shading == Shading::diffuse;
-  c.program = textured  ? link(kTextureVertexShader, kTextureFragmentShader, error)
-              : diffuse ? link(kDiffuseVertexShader, kDiffuseFragmentShader, error)
-                        : link(kColorVertexShader, kColorFragmentShader, error);
+  c.program = textured  ? gl::link_program(kTextureVertexShader, kTextureFragmentShader, error)
+              : diffuse ? gl::link_program(kDiffuseVertexShader, kDiffuseFragmentShader, error)
+                        : gl::link_program(kColorVertexShader, kColorFragmentShader, error);
   if (c.program == 0) return false;
   glUseProgram(c.program);
   Mat4 to_clip = options.transform;

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 
+#include "gl/surfaceless_gl.hpp"
+
 namespace edgewise::test {
 namespace {
 
@@ -45,43 +47,6 @@ void main() {
   color = texelFetch(samples, ivec2(p.x % width, p.y), p.x / width);
 }
 )";
-
-GLuint compile(GLenum stage, const char* source, std::string& why_not) {
-  const GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok == GL_TRUE) return shader;
-  char log[1024] = {};
-  glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-  why_not = std::string("a shader does not compile: ") + log;
-  glDeleteShader(shader);
-  return 0;
-}
-
-GLuint link(const char* vertex_source, const char* fragment_source, std::string& why_not) {
-  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source, why_not);
-  const GLuint fragment = vertex != 0 ? compile(GL_FRAGMENT_SHADER, fragment_source, why_not) : 0;
-  if (fragment == 0) {
-    glDeleteShader(vertex);
-    return 0;
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vertex);
-  glAttachShader(program, fragment);
-  glLinkProgram(program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok == GL_TRUE) return program;
-  char log[1024] = {};
-  glGetProgramInfoLog(program, sizeof log, nullptr, log);
-  why_not = std::string("a program does not link: ") + log;
-  glDeleteProgram(program);
-  return 0;
-}
 
 // A framebuffer with `texture` as its one colour attachment, or 0.
 GLuint framebuffer_of(GLenum target, GLuint texture) {
@@ -136,9 +101,9 @@ std::unique_ptr<GlMultisampleIds> GlMultisampleIds::create(std::int32_t width, s
     return nullptr;
   }
 
-  gl->draw_program_ = link(kIdVertexShader, kIdFragmentShader, why_not);
+  gl->draw_program_ = gl::link_program(kIdVertexShader, kIdFragmentShader, why_not);
   if (gl->draw_program_ == 0) return nullptr;
-  gl->read_program_ = link(kPlanesVertexShader, kPlanesFragmentShader, why_not);
+  gl->read_program_ = gl::link_program(kPlanesVertexShader, kPlanesFragmentShader, why_not);
   if (gl->read_program_ == 0) return nullptr;
   glUseProgram(gl->read_program_);
   glUniform1i(glGetUniformLocation(gl->read_program_, "samples"), 0);

@@ -38,7 +38,7 @@
 #include "isa_params.hpp"
 #include "random.hpp"
 #include "sample_edge_triangles.hpp"
-#include "surfaceless_gl.hpp"
+#include "gl/surfaceless_gl.hpp"
 #include "tie_rules.hpp"
 
 namespace edgewise::test {
@@ -135,7 +135,7 @@ std::string match_samples(const std::vector<Vec2>& positions,
 LlvmpipeRun run_llvmpipe() {
   LlvmpipeRun run;
   std::string why_not;
-  const auto gl = SurfacelessGl::create(why_not);
+  const auto gl = gl::SurfacelessGl::create(why_not);
   if (!gl) {
     run.skip = "no OpenGL context on EGL's surfaceless platform: " + why_not;
     return run;

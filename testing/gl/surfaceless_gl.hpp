@@ -1,6 +1,7 @@
 // An OpenGL 3.3 core context on EGL's surfaceless platform, current on the calling thread, in
-// this process: how the peer tests reach Mesa's llvmpipe without a display. It has no window;
-// everything is drawn into framebuffer objects.
+// this process: how the llvmpipe peers (edgewise-bench's DrawPeer/ and tests/peer) reach Mesa's
+// llvmpipe without a display. It has no window; everything is drawn into framebuffer objects.
+// And the shader programs both build.
 #pragma once
 
 #include <EGL/egl.h>
@@ -8,7 +9,7 @@
 #include <memory>
 #include <string>
 
-namespace edgewise::test {
+namespace edgewise::gl {
 
 class SurfacelessGl {
  public:
@@ -29,4 +30,8 @@ class SurfacelessGl {
   std::string renderer_;
 };
 
-}  // namespace edgewise::test
+// The program (a GLuint) of a vertex and a fragment shader (GLSL source) in the current
+// context, or 0 with `why_not` holding the compiler's or linker's log.
+unsigned link_program(const char* vertex_source, const char* fragment_source, std::string& why_not);
+
+}  // namespace edgewise::gl

@@ -1,13 +1,13 @@
-#include "surfaceless_gl.hpp"
-
 #define GL_GLEXT_PROTOTYPES 1
+#include "gl/surfaceless_gl.hpp"
+
 #include <EGL/eglext.h>
 #include <GL/glcorearb.h>
 
 #include <cstdlib>
 #include <string_view>
 
-namespace edgewise::test {
+namespace edgewise::gl {
 namespace {
 
 // Whether the space-separated `list` (an EGL extension string) holds `word`.
@@ -23,7 +23,45 @@ bool lists(const char* list, std::string_view word) {
   return false;
 }
 
+GLuint compile(GLenum stage, const char* source, std::string& why_not) {
+  const GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok == GL_TRUE) return shader;
+  char log[1024] = {};
+  glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+  why_not = std::string("a shader does not compile: ") + log;
+  glDeleteShader(shader);
+  return 0;
+}
+
 }  // namespace
+
+unsigned link_program(const char* vertex_source, const char* fragment_source,
+                      std::string& why_not) {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source, why_not);
+  const GLuint fragment = vertex != 0 ? compile(GL_FRAGMENT_SHADER, fragment_source, why_not) : 0;
+  if (fragment == 0) {
+    glDeleteShader(vertex);
+    return 0;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, vertex);
+  glAttachShader(program, fragment);
+  glLinkProgram(program);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok == GL_TRUE) return program;
+  char log[1024] = {};
+  glGetProgramInfoLog(program, sizeof log, nullptr, log);
+  why_not = std::string("a program does not link: ") + log;
+  glDeleteProgram(program);
+  return 0;
+}
 
 std::unique_ptr<SurfacelessGl> SurfacelessGl::create(std::string& why_not) {
   // Mesa reads it when the display is initialized: on a machine with a GPU, the surfaceless
@@ -96,4 +134,4 @@ SurfacelessGl::~SurfacelessGl() {
   if (display_ != EGL_NO_DISPLAY) eglTerminate(display_);
 }
 
-}  // namespace edgewise::test
+}  // namespace edgewise::gl
