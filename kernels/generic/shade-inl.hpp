@@ -24,6 +24,7 @@
 #include "../src/shade_batch.hpp"
 #include "interpolation-inl.hpp"
 #include "plane_setup-inl.hpp"
+#include "sample_walk-inl.hpp"
 #include "simd_ops-inl.hpp"
 #include "texture_tile-inl.hpp"
 #include "tile_masks-inl.hpp"
@@ -56,14 +57,8 @@ class ShadingVisitor {
         // colours (and diffuse the normals) directly, and then, untextured, needs nothing per
         // triangle beyond the planes.
         needs_vertices_(textured_ || !colour_planes_),
-        pattern_(batch.coverage.samples) {
-    for (const SampleOffset& offset : pattern_) {
-      sample_reach_.x_min = std::min(sample_reach_.x_min, std::int32_t{offset.x});
-      sample_reach_.x_max = std::max(sample_reach_.x_max, std::int32_t{offset.x});
-      sample_reach_.y_min = std::min(sample_reach_.y_min, std::int32_t{offset.y});
-      sample_reach_.y_max = std::max(sample_reach_.y_max, std::int32_t{offset.y});
-    }
-  }
+        pattern_(batch.coverage.samples),
+        sample_reach_(sample_reach(pattern_)) {}
 
   // The depth and colour planes of a group of triangles (plane_setup-inl.hpp), before
   // begin_triangle() for each.
@@ -208,8 +203,8 @@ class ShadingVisitor {
       fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
     if (skips_hidden_tile(tile_index, px, py)) return;
     // Per sample, the rows with a sample that passed (bit `row`) and each row's lanes to write.
-    std::uint32_t passed_rows[kMaxPatternSamples];
-    Mask writes[kMaxPatternSamples][kTileSize][kParts];
+    std::uint32_t passed_rows[kMaxSamples];
+    Mask writes[kMaxSamples][kTileSize][kParts];
     std::uint32_t written_rows = 0;
     std::uint64_t tile_passed = 0;
     with_depth_test([&](auto test) {
@@ -770,24 +765,27 @@ class ShadingVisitor {
   // exact one by about 7 u^2 M; the extra u M covers that many times over. A NaN bound compares
   // false: such a tile is never skipped.
   bool hidden(float bound, std::int32_t px, std::int32_t py) const {
-    const SampleReach16& r = sample_reach_;
+    const SampleReach& r = sample_reach_;
+    // The pattern's reach in sixteenths of a pixel, as the depth formula takes offsets (16
+    // fixed-point units each), and in pixels.
+    const auto sixteenths = [](std::int32_t fixed) { return fixed / 16; };
+    const auto px_of = [&](std::int32_t fixed) { return detail::sixteenths(sixteenths(fixed)); };
     const bool low_x = depth_.dzdx >= 0.0f, low_y = depth_.dzdy >= 0.0f;
     const std::int32_t cx = low_x ? px : px + kTileSize - 1;
     const std::int32_t cy = low_y ? py : py + kTileSize - 1;
     const float corner_dx =
-        ((static_cast<float>(cx) + 0.5f) + detail::sixteenths(low_x ? r.x_min : r.x_max)) -
-        depth_.x0;
-    const double corner =
-        static_cast<double>(detail::depth_row_base(depth_, cy, low_y ? r.y_min : r.y_max)) +
-        depth_.dzdx * corner_dx;
+        ((static_cast<float>(cx) + 0.5f) + px_of(low_x ? r.x_min : r.x_max)) - depth_.x0;
+    const double corner = static_cast<double>(detail::depth_row_base(
+                              depth_, cy, sixteenths(low_y ? r.y_min : r.y_max))) +
+                          depth_.dzdx * corner_dx;
     // Plain comparisons rather than std::fmax/fmin, which compile to library calls; they give
     // the same values here (the reaches are finite, and a NaN corner becomes 0 either way).
-    const double reach_x = larger(
-        std::fabs(((static_cast<float>(px) + 0.5f) + detail::sixteenths(r.x_min)) - depth_.x0),
-        std::fabs(((static_cast<float>(px) + 7.5f) + detail::sixteenths(r.x_max)) - depth_.x0));
-    const double reach_y = larger(
-        std::fabs(((static_cast<float>(py) + 0.5f) + detail::sixteenths(r.y_min)) - depth_.y0),
-        std::fabs(((static_cast<float>(py) + 7.5f) + detail::sixteenths(r.y_max)) - depth_.y0));
+    const double reach_x =
+        larger(std::fabs(((static_cast<float>(px) + 0.5f) + px_of(r.x_min)) - depth_.x0),
+               std::fabs(((static_cast<float>(px) + 7.5f) + px_of(r.x_max)) - depth_.x0));
+    const double reach_y =
+        larger(std::fabs(((static_cast<float>(py) + 0.5f) + px_of(r.y_min)) - depth_.y0),
+               std::fabs(((static_cast<float>(py) + 7.5f) + px_of(r.y_max)) - depth_.y0));
     const double margin = 8.0 * 0x1p-24 *
                           (std::fabs(depth_.z0) + std::fabs(depth_.dzdy) * reach_y +
                            std::fabs(depth_.dzdx) * reach_x);
@@ -914,13 +912,9 @@ class ShadingVisitor {
   std::uint64_t tiles_skipped_ = 0;
   std::uint64_t passed_ = 0;
   TextureTile<Arch> texture_;
-  // The target's sample pattern (empty: pixel centres) and its reach in 1/16 px.
-  struct SampleReach16 {
-    std::int32_t x_min = 0, x_max = 0, y_min = 0, y_max = 0;
-  };
-  static constexpr std::size_t kMaxPatternSamples = 16;
+  // The target's sample pattern (empty: pixel centres) and its reach (sample_walk-inl.hpp).
   std::span<const SampleOffset> pattern_;
-  SampleReach16 sample_reach_;
+  SampleReach sample_reach_;
 };
 
 // The shading visitor of a multisampled target: the walks deliver every sample's masks

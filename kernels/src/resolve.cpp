@@ -57,7 +57,7 @@ class Encoder {
   explicit Encoder(bool srgb) : srgb_(srgb) {
     // Code c is the nearest when the value's encoding lies in [(c - 1/2) / 255, (c + 1/2) / 255):
     // thresholds[c] is the linear value where code c + 1 begins.
-    for (int c = 0; c < 255; ++c)
+    for (int c = 0; c < 255 && srgb; ++c)
       thresholds_[c] = static_cast<float>(srgb_to_linear((c + 0.5) / 255.0));
   }
   bool srgb() const { return srgb_; }
