@@ -17,6 +17,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -91,19 +92,27 @@ template <class Arch, class Int, class Visitor>
         const std::uint64_t clip =
             rows & column_bits(box.x0 > tx ? box.x0 - tx : 0,
                                box.x1 - tx < kTileSize ? box.x1 - tx : kTileSize);
-        const bool accepted = (g[0] + accept_offset[0] >= 0) & (g[1] + accept_offset[1] >= 0) &
-                              (g[2] + accept_offset[2] >= 0);
+        // The edges that may exclude a sample of the tile: only those are evaluated.
+        const unsigned crossing = (g[0] + accept_offset[0] < 0 ? 1u : 0u) |
+                                  (g[1] + accept_offset[1] < 0 ? 2u : 0u) |
+                                  (g[2] + accept_offset[2] < 0 ? 4u : 0u);
         std::uint64_t any = 0;
-        for (std::size_t k = 0; k < samples && accepted; ++k) {
-          masks[k] = clip;
+        if (crossing == 0) {
+          for (std::size_t k = 0; k < samples; ++k)
+            masks[k] = clip;
           any = clip;
-        }
-        for (std::size_t k = 0; k < samples && !accepted; ++k) {
-          const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0] + delta[0][k]),
-                                          clamp_to_tile_range(g[1] + delta[1][k]),
-                                          clamp_to_tile_range(g[2] + delta[2][k])};
-          masks[k] = evaluator.coverage(tile_g) & clip;
-          any |= masks[k];
+        } else {
+          evaluator.coverage_of(
+              crossing, samples,
+              [&](std::size_t k) {
+                return std::array<std::int32_t, 3>{clamp_to_tile_range(g[0] + delta[0][k]),
+                                                   clamp_to_tile_range(g[1] + delta[1][k]),
+                                                   clamp_to_tile_range(g[2] + delta[2][k])};
+              },
+              [&](std::size_t k, std::uint64_t mask) {
+                masks[k] = mask & clip;
+                any |= masks[k];
+              });
         }
         if (any != 0) {
           visitor.sample_tile(first_tile_x + column, static_cast<std::uint32_t>(ty / kTileSize),

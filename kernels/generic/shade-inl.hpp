@@ -58,7 +58,12 @@ class ShadingVisitor {
         // triangle beyond the planes.
         needs_vertices_(textured_ || !colour_planes_),
         pattern_(batch.coverage.samples),
-        sample_reach_(sample_reach(pattern_)) {}
+        sample_reach_(sample_reach(pattern_)) {
+    for (std::size_t k = 0; k < pattern_.size() && k < kMaxSamples; ++k) {
+      sample_dx_[k] = detail::sixteenths(pattern_[k].x);
+      sample_dy_[k] = detail::sixteenths(pattern_[k].y);
+    }
+  }
 
   // The depth and colour planes of a group of triangles (plane_setup-inl.hpp), before
   // begin_triangle() for each.
@@ -94,6 +99,7 @@ class ShadingVisitor {
   // Triangle t, lane l of the last begin_group().
   void begin_triangle(std::uint32_t t, std::size_t l) {
     row_bases_tile_y_ = kNoTileRow;
+    sample_rows_tile_y_ = kNoTileRow;
     depth_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
     max_vertex_depth_ = group_.max_depth[l];
     if (colour_planes_) {
@@ -185,11 +191,18 @@ class ShadingVisitor {
     if (keep_bounds_) tighten_bound(tile_index, depth, rows, stored_max);
   }
 
+  // The dx terms of the depth formula and of the colour planes for the columns of the tiles
+  // starting at pixel column px.
+  struct ColumnTerms {
+    Floats depth[kParts];
+    Floats colour[kPlanes][kParts];
+  };
+
   // A tile of a multisampled target (walk_sample_tiles): masks[k] is sample k's coverage, and
   // sample k of the tile is the 64 values from (tile * samples + k) * 64 (framebuffer.hpp). Each
-  // covered sample's depth is tested, and written, at its own position; each pixel with a sample
-  // that passed is shaded once, at its centre, and that colour written to those samples, under
-  // the lanes the depth test kept.
+  // covered sample's depth is tested, and written, at its own position; each pixel with a
+  // covered sample is shaded once, at its centre, and that colour written to the samples that
+  // passed.
   void sample_tile(std::uint32_t tile_x, std::uint32_t tile_y,
                    std::span<const std::uint64_t> masks) {
     const std::size_t samples = masks.size();
@@ -199,23 +212,47 @@ class ShadingVisitor {
     std::uint32_t* color = batch_.color_tiles + tile_index * samples * 64;
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
     const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
-    for (std::uint64_t mask : masks)
-      fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
+    std::uint64_t covered = 0, in_every_sample = ~std::uint64_t{0}, fragments = 0;
+    for (std::uint64_t mask : masks) {
+      fragments += static_cast<std::uint64_t>(std::popcount(mask));
+      covered |= mask;
+      in_every_sample &= mask;
+    }
+    fragments_ += fragments;
     if (skips_hidden_tile(tile_index, px, py)) return;
-    // Per sample, the rows with a sample that passed (bit `row`) and each row's lanes to write.
-    std::uint32_t passed_rows[kMaxSamples];
-    Mask writes[kMaxSamples][kTileSize][kParts];
-    std::uint32_t written_rows = 0;
+    ColumnTerms columns;
+    set_up_tile_columns(px, columns);
+    if (colour_planes_ && tile_y != row_bases_tile_y_) {
+      set_up_colour_rows(py, row_bases_);
+      row_bases_tile_y_ = tile_y;
+    }
+    SampleDepthTerms terms;
+    set_up_sample_depth(px, samples, terms);
+    if (tile_y != sample_rows_tile_y_) {
+      set_up_sample_rows(py, samples);
+      sample_rows_tile_y_ = tile_y;
+    }
     std::uint64_t tile_passed = 0;
-    with_depth_test([&](auto test) {
-      for (std::size_t k = 0; k < samples; ++k) {
-        const std::uint64_t passed = sample_depth_test<decltype(test)::value>(
-            masks[k], depth + k * 64, px, py, pattern_[k], writes[k], passed_rows[k]);
-        tile_passed += static_cast<std::uint64_t>(std::popcount(passed));
-        written_rows |= passed_rows[k];
-      }
-    });
-    if (written_rows == 0) return;
+    if (textured_) {
+      tile_passed = shade_textured_samples(masks, depth, color, px, py, columns, terms);
+    } else {
+      with_depth_test([&](auto test) {
+        constexpr DepthTest kTest = decltype(test)::value;
+        if (in_every_sample == ~std::uint64_t{0}) {
+          tile_passed = batch_.depth_write
+                            ? shade_samples<kTest, true, true>(masks, covered, depth, color, px, py,
+                                                               columns, terms)
+                            : shade_samples<kTest, false, true>(masks, covered, depth, color, px,
+                                                                py, columns, terms);
+        } else {
+          tile_passed = batch_.depth_write
+                            ? shade_samples<kTest, true, false>(masks, covered, depth, color, px,
+                                                                py, columns, terms)
+                            : shade_samples<kTest, false, false>(masks, covered, depth, color, px,
+                                                                 py, columns, terms);
+        }
+      });
+    }
     passed_ += tile_passed;
     // The tile's bound anew from every sample's depth where the writes may have raised it
     // (tests other than less and less_equal), or where they replaced every sample (a tile the
@@ -224,7 +261,7 @@ class ShadingVisitor {
     // leaves it for small triangles): the recount would cost more than the depth test itself.
     const bool may_raise =
         batch_.depth_test != DepthTest::less && batch_.depth_test != DepthTest::less_equal;
-    if (keep_bounds_ && (may_raise || tile_passed == 64 * samples)) {
+    if (keep_bounds_ && tile_passed != 0 && (may_raise || tile_passed == 64 * samples)) {
       Floats stored_max(-std::numeric_limits<float>::infinity());
       for (std::size_t k = 0; k < samples; ++k) {
         for (int row = 0; row < kTileSize; ++row)
@@ -232,25 +269,105 @@ class ShadingVisitor {
       }
       batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
     }
-    ColumnTerms columns;
-    set_up_tile_columns(px, columns);
-    if (colour_planes_ && tile_y != row_bases_tile_y_) {
-      set_up_colour_rows(py, row_bases_);
-      row_bases_tile_y_ = tile_y;
+  }
+
+  // Each sample's dx terms of the depth formula over a tile column, per batch of lanes (its row
+  // terms are sample_row_base_): depth_at() with the sample's offset, the same float operations.
+  struct SampleDepthTerms {
+    Floats column[kMaxSamples][kParts];
+  };
+
+  [[gnu::always_inline]] void set_up_sample_depth(std::int32_t px, std::size_t samples,
+                                                  SampleDepthTerms& terms) const {
+    for (std::size_t h = 0; h < kParts; ++h) {
+      const Floats centre_x =
+          interpolation_detail::lane_centers<Arch>(px + static_cast<std::int32_t>(h * kLanes));
+      for (std::size_t k = 0; k < samples; ++k)
+        terms.column[k][h] =
+            Floats(depth_.dzdx) * ((centre_x + Floats(sample_dx_[k])) - Floats(depth_.x0));
     }
-    if (textured_) {
-      texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
-                           31 - std::countl_zero(written_rows));
+  }
+
+  // Each sample's row terms of the depth formula for the tile row from pixel row py.
+  [[gnu::always_inline]] void set_up_sample_rows(std::int32_t py, std::size_t samples) {
+    for (std::size_t h = 0; h < kParts; ++h) {
+      const auto first = static_cast<std::int32_t>(h * kLanes);
+      const Floats centre_y = interpolation_detail::lane_centers<Arch>(py + first);
+      for (std::size_t k = 0; k < samples; ++k) {
+        const Floats dy = (centre_y + Floats(sample_dy_[k])) - Floats(depth_.y0);
+        (Floats(depth_.z0) + Floats(depth_.dzdy) * dy).store_aligned(sample_row_base_[k] + first);
+      }
     }
+  }
+
+  // Untextured multisampled tiles in one pass over the covered rows: per batch of lanes, the
+  // colour at the pixel centres, then per sample with covered lanes the depth test and the
+  // writes. Returns the samples that passed. A tile every sample of which is covered (Full) needs
+  // no lane masks.
+  template <DepthTest Test, bool WriteDepth, bool Full>
+  [[gnu::always_inline]] std::uint64_t shade_samples(std::span<const std::uint64_t> masks,
+                                                     std::uint64_t covered, float* depth,
+                                                     std::uint32_t* color, std::int32_t px,
+                                                     std::int32_t py, const ColumnTerms& columns,
+                                                     const SampleDepthTerms& terms) {
+    const std::size_t samples = masks.size();
+    constexpr std::uint32_t kLaneBits = (1u << kLanes) - 1;
+    Floats passed(0.0f);  // per lane, the samples that passed (exact: at most 128 per tile)
+    for (std::uint32_t rows = covered_rows(covered); rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
+      for (std::size_t h = 0; h < kParts; ++h) {
+        const std::size_t at = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
+        Floats channel[4];
+        colour_channels(row_bases_, columns, px, py, row, h, channel);
+        const Ints packed = pack_rgba8_lanes<Arch>(channel);
+        for (std::size_t k = 0; k < samples; ++k) {
+          const std::uint32_t lanes = static_cast<std::uint32_t>(masks[k] >> at) & kLaneBits;
+          if (!Full && lanes == 0) continue;
+          float* sample_depth = depth + k * 64;
+          const Floats z = clamp01(Floats(sample_row_base_[k][row]) + terms.column[k][h]);
+          const Floats stored = Floats::load_aligned(sample_depth + at);
+          Mask write = passes<Test>(z, stored);
+          if constexpr (!Full) write = write && lanes_of_bits<Arch>(lanes);
+          if constexpr (WriteDepth)
+            xsimd::select(write, z, stored).store_aligned(sample_depth + at);
+          write_colour(color + k * 64, row, h, write, packed);
+          passed += xsimd::select(write, Floats(1.0f), Floats(0.0f));
+        }
+      }
+    }
+    return static_cast<std::uint64_t>(xsimd::hadd(passed));  // exact: at most 1024
+  }
+
+  // Textured multisampled tiles: every sample's depth test first, then the texels of the rows
+  // with a sample that passed, and the colour written to those samples. Returns the samples
+  // that passed.
+  std::uint64_t shade_textured_samples(std::span<const std::uint64_t> masks, float* depth,
+                                       std::uint32_t* color, std::int32_t px, std::int32_t py,
+                                       const ColumnTerms& columns, const SampleDepthTerms& terms) {
+    const std::size_t samples = masks.size();
+    // Per sample, the rows with a sample that passed (bit `row`) and each row's lanes to write.
+    std::uint32_t passed_rows[kMaxSamples];
+    Mask writes[kMaxSamples][kTileSize][kParts];
+    std::uint32_t written_rows = 0;
+    std::uint64_t tile_passed = 0;
+    with_depth_test([&](auto test) {
+      for (std::size_t k = 0; k < samples; ++k) {
+        const std::uint64_t passed = sample_depth_test<decltype(test)::value>(
+            masks[k], depth + k * 64, terms, k, writes[k], passed_rows[k]);
+        tile_passed += static_cast<std::uint64_t>(std::popcount(passed));
+        written_rows |= passed_rows[k];
+      }
+    });
+    if (written_rows == 0) return 0;
+    texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
+                         31 - std::countl_zero(written_rows));
     for (std::uint32_t rows = written_rows; rows != 0; rows &= rows - 1) {
       const int row = std::countr_zero(rows);
       for (std::size_t h = 0; h < kParts; ++h) {
         Floats channel[4];
         colour_channels(row_bases_, columns, px, py, row, h, channel);
-        if (textured_) {
-          for (int k = 0; k < 4; ++k)
-            channel[k] = channel[k] * texture_.texel(k, row, h);
-        }
+        for (int k = 0; k < 4; ++k)
+          channel[k] = channel[k] * texture_.texel(k, row, h);
         const Ints packed = pack_rgba8_lanes<Arch>(channel);
         for (std::size_t k = 0; k < samples; ++k) {
           if ((passed_rows[k] >> row) & 1u)
@@ -258,40 +375,26 @@ class ShadingVisitor {
         }
       }
     }
+    return tile_passed;
   }
 
-  // One sample's depth test over a tile (`depth` its plane of the tile), at the sample's offset
-  // from each pixel centre; the depth written where it passes. Fills `writes` for the rows of
+  // One sample's depth test over a tile (`depth` its plane of the tile, `terms` its depth
+  // formula's terms), the depth written where it passes. Fills `writes` for the rows of
   // `passed_rows` (the rows where some lane passed) and returns the samples that passed (bit
-  // y * 8 + x). The rows' depth_row_base() terms are computed a batch of rows at a time, by the
-  // same float operations.
+  // y * 8 + x).
   template <DepthTest Test>
   [[gnu::always_inline]] std::uint64_t sample_depth_test(std::uint64_t mask, float* depth,
-                                                         std::int32_t px, std::int32_t py,
-                                                         SampleOffset offset,
-                                                         Mask (*writes)[kParts],
+                                                         const SampleDepthTerms& terms,
+                                                         std::size_t k, Mask (*writes)[kParts],
                                                          std::uint32_t& passed_rows) {
-    Floats column_depth[kParts];
-    alignas(64) float row_base[kTileSize];
-    for (std::size_t h = 0; h < kParts; ++h) {
-      const auto first = static_cast<std::int32_t>(h * kLanes);
-      const Floats dx = (interpolation_detail::lane_centers<Arch>(px + first) +
-                         Floats(detail::sixteenths(offset.x))) -
-                        Floats(depth_.x0);
-      column_depth[h] = Floats(depth_.dzdx) * dx;
-      const Floats dy = (interpolation_detail::lane_centers<Arch>(py + first) +
-                         Floats(detail::sixteenths(offset.y))) -
-                        Floats(depth_.y0);
-      (Floats(depth_.z0) + Floats(depth_.dzdy) * dy).store_aligned(row_base + first);
-    }
     std::uint64_t passed = 0;
     for (std::uint32_t rows = covered_rows(mask); rows != 0; rows &= rows - 1) {
       const int row = std::countr_zero(rows);
       const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-      const Floats base(row_base[row]);
+      const Floats base(sample_row_base_[k][row]);
       for (std::size_t h = 0; h < kParts; ++h) {
         const std::size_t at = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
-        const Floats z = clamp01(base + column_depth[h]);
+        const Floats z = clamp01(base + terms.column[k][h]);
         const Floats stored = Floats::load_aligned(depth + at);
         const Mask write = lanes_of_bits<Arch>(row_mask >> (h * kLanes)) && passes<Test>(z, stored);
         if (batch_.depth_write) xsimd::select(write, z, stored).store_aligned(depth + at);
@@ -400,13 +503,6 @@ class ShadingVisitor {
       keep_row_bound(depth, std::countr_zero(other), stored_max);
     batch_.tile_max_depth[tile_index] = horizontal_max(stored_max);
   }
-
-  // The dx terms of the depth formula and of the colour planes for the columns of the tiles
-  // starting at pixel column px.
-  struct ColumnTerms {
-    Floats depth[kParts];
-    Floats colour[kPlanes][kParts];
-  };
 
   // The dx terms for tile columns from px (exact dx, one rounding each); the colour planes'
   // only when colour comes from planes.
@@ -915,6 +1011,10 @@ class ShadingVisitor {
   // The target's sample pattern (empty: pixel centres) and its reach (sample_walk-inl.hpp).
   std::span<const SampleOffset> pattern_;
   SampleReach sample_reach_;
+  float sample_dx_[kMaxSamples]{}, sample_dy_[kMaxSamples]{};  // the pattern's offsets in pixels
+  // Each sample's depth row terms for the tile row sample_rows_tile_y_ (set_up_sample_rows()).
+  std::uint32_t sample_rows_tile_y_ = kNoTileRow;
+  alignas(64) float sample_row_base_[kMaxSamples][kTileSize];
 };
 
 // The shading visitor of a multisampled target: the walks deliver every sample's masks

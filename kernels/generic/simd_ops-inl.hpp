@@ -43,15 +43,28 @@ inline std::uint32_t sign_bits(xsimd::batch<std::int32_t, Arch> v) {
   }
 }
 
+// The eight lanes of every 8-bit set, all ones where the bit is set: one load makes the mask
+// that a broadcast, an and and a compare would (8 KiB, of which a triangle's rows touch few).
+struct EightLaneMasks {
+  alignas(32) std::int32_t lanes[256][8];
+};
+inline constexpr EightLaneMasks kEightLaneMasks = [] {
+  EightLaneMasks table{};
+  for (int bits = 0; bits < 256; ++bits) {
+    for (int lane = 0; lane < 8; ++lane)
+      table.lanes[bits][lane] = (bits >> lane) & 1 ? -1 : 0;
+  }
+  return table;
+}();
+
 // Lane i true where bit i of `bits` is set (the bits of kLanes lanes; higher bits ignored).
 template <class Arch>
 inline xsimd::batch_bool<float, Arch> lanes_of_bits(std::uint32_t bits) {
   using Bools = xsimd::batch_bool<float, Arch>;
 #if defined(__AVX2__)
   if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    const __m256i set = _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), bit);
-    return Bools(_mm256_castsi256_ps(_mm256_cmpeq_epi32(set, bit)));
+    return Bools(
+        _mm256_load_ps(reinterpret_cast<const float*>(kEightLaneMasks.lanes[bits & 0xFFu])));
   } else
 #endif
 #if defined(__SSE2__)
