@@ -236,22 +236,32 @@ class ShadingVisitor {
     if (textured_) {
       tile_passed = shade_textured_samples(masks, depth, color, px, py, columns, terms);
     } else {
-      with_depth_test([&](auto test) {
-        constexpr DepthTest kTest = decltype(test)::value;
-        if (in_every_sample == ~std::uint64_t{0}) {
-          tile_passed = batch_.depth_write
-                            ? shade_samples<kTest, true, true>(masks, covered, depth, color, px, py,
-                                                               columns, terms)
-                            : shade_samples<kTest, false, true>(masks, covered, depth, color, px,
-                                                                py, columns, terms);
-        } else {
-          tile_passed = batch_.depth_write
-                            ? shade_samples<kTest, true, false>(masks, covered, depth, color, px,
-                                                                py, columns, terms)
-                            : shade_samples<kTest, false, false>(masks, covered, depth, color, px,
-                                                                 py, columns, terms);
-        }
-      });
+      // The test and the kind of tile chosen by a switch rather than through with_depth_test():
+      // the lambda's captures would be built in memory for every tile.
+      const bool full = in_every_sample == ~std::uint64_t{0};
+      const bool write = batch_.depth_write;
+      switch (batch_.depth_test) {
+        case DepthTest::less:
+          tile_passed = shade_samples_as<DepthTest::less>(full, write, masks, covered, depth, color,
+                                                          px, py, columns, terms);
+          break;
+        case DepthTest::less_equal:
+          tile_passed = shade_samples_as<DepthTest::less_equal>(full, write, masks, covered, depth,
+                                                                color, px, py, columns, terms);
+          break;
+        case DepthTest::greater:
+          tile_passed = shade_samples_as<DepthTest::greater>(full, write, masks, covered, depth,
+                                                             color, px, py, columns, terms);
+          break;
+        case DepthTest::always:
+          tile_passed = shade_samples_as<DepthTest::always>(full, write, masks, covered, depth,
+                                                            color, px, py, columns, terms);
+          break;
+        case DepthTest::never:
+          tile_passed = shade_samples_as<DepthTest::never>(full, write, masks, covered, depth,
+                                                           color, px, py, columns, terms);
+          break;
+      }
     }
     passed_ += tile_passed;
     // The tile's bound anew from every sample's depth where the writes may have raised it
@@ -298,6 +308,26 @@ class ShadingVisitor {
         (Floats(depth_.z0) + Floats(depth_.dzdy) * dy).store_aligned(sample_row_base_[k] + first);
       }
     }
+  }
+
+  // shade_samples() for a full tile or not, with depth writes or not.
+  template <DepthTest Test>
+  [[gnu::always_inline]] std::uint64_t shade_samples_as(bool full, bool write,
+                                                        std::span<const std::uint64_t> masks,
+                                                        std::uint64_t covered, float* depth,
+                                                        std::uint32_t* color, std::int32_t px,
+                                                        std::int32_t py, const ColumnTerms& columns,
+                                                        const SampleDepthTerms& terms) {
+    if (full) {
+      return write ? shade_samples<Test, true, true>(masks, covered, depth, color, px, py, columns,
+                                                     terms)
+                   : shade_samples<Test, false, true>(masks, covered, depth, color, px, py, columns,
+                                                      terms);
+    }
+    return write ? shade_samples<Test, true, false>(masks, covered, depth, color, px, py, columns,
+                                                    terms)
+                 : shade_samples<Test, false, false>(masks, covered, depth, color, px, py, columns,
+                                                     terms);
   }
 
   // Untextured multisampled tiles in one pass over the covered rows: per batch of lanes, the
