@@ -42,6 +42,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <xsimd/xsimd.hpp>
@@ -98,78 +99,23 @@ inline void store_as_floats(xsimd::batch<double, Arch> v, float* out) {
   }
 }
 
-// One edge of a triangle, in pixels, x from the clipped box's left side (origin_x).
+// One edge of a triangle, in pixels, x from the walk's origin (the left side of the box's first
+// tile).
 struct AreaEdge {
-  double left, right;  // x extent (exact)
-  double x0, y0;       // P, its x from the origin and its y (exact)
-  double inverse_slope;  // dx / dy; 0 for a horizontal edge
-  std::int64_t y_low, y_high;  // y extent, fixed point
+  double left, right;          // x extent (exact)
+  double x0, y0;               // P, its x from the origin and its y (exact)
+  double inverse_slope;        // dx / dy; 0 for a horizontal edge
+  double y_low, y_high;        // y extent (exact)
+  double no_ramp;              // kNoRamp for a horizontal edge, else 0
   bool horizontal, rising;     // dy = 0; y grows with x
   // The signed weights of (hi - lo), (hi - b) and (b - a) ((a + b) - 2 A) in the area.
   double whole_weight, upper_weight, ramp_weight;
   double sign;  // of dx, times the winding
-
-  // x where the edge's line crosses the horizontal line at y (pixels).
-  double crossing(double y) const { return x0 + (y - y0) * inverse_slope; }
 };
 
-// Where a horizontal edge's ramp lies: beyond every pixel, so that a = b = hi.
+// Where a horizontal edge's ramp lies: beyond every pixel, so that a = b = hi; and its pixel
+// range, widened to the whole of its extent.
 inline constexpr double kNoRamp = 0x1p60;
-
-// The per-lane arithmetic: an edge's constants for the triangle and for the current band, and
-// the areas of kLanes consecutive pixels.
-template <class Arch>
-class AreaLanes {
- public:
-  using Doubles = xsimd::batch<double, Arch>;
-  static constexpr std::size_t kLanes = Doubles::size;
-
-  AreaLanes(const AreaEdge* edges, double width) : width_(width) {
-    alignas(64) double offsets[kLanes];
-    for (std::size_t l = 0; l < kLanes; ++l)
-      offsets[l] = static_cast<double>(l);
-    offsets_ = Doubles::load_aligned(offsets);
-    for (int e = 0; e < 3; ++e) {
-      left_[e] = Doubles(edges[e].left);
-      right_[e] = Doubles(edges[e].right);
-      upper_[e] = Doubles(edges[e].upper_weight);
-      ramp_[e] = Doubles(edges[e].ramp_weight);
-    }
-  }
-
-  // The band's constants of edge e: the ramp [start, end] and the weight of (hi - lo).
-  void set_band(int e, double start, double end, double whole_weight) {
-    start_[e] = Doubles(start);
-    twice_start_[e] = Doubles(2.0 * start);
-    end_[e] = Doubles(end);
-    whole_[e] = Doubles(whole_weight);
-  }
-
-  // Areas of the pixels whose columns start at u + lane (from the origin); 0 outside
-  // [0, width).
-  Doubles areas(double first) const {
-    const Doubles u = Doubles(first) + offsets_;
-    const Doubles u1 = u + Doubles(1.0);
-    Doubles sum(0.0);
-    for (int e = 0; e < 3; ++e) {
-      const Doubles lo = xsimd::min(xsimd::max(left_[e], u), u1);
-      const Doubles hi = xsimd::min(xsimd::max(right_[e], u), u1);
-      const Doubles a = xsimd::min(xsimd::max(start_[e], lo), hi);
-      const Doubles b = xsimd::min(xsimd::max(end_[e], lo), hi);
-      sum = xsimd::fma(whole_[e], hi - lo, sum);
-      sum = xsimd::fma(upper_[e], hi - b, sum);
-      sum = xsimd::fma(ramp_[e], (b - a) * ((a + b) - twice_start_[e]), sum);
-    }
-    const auto keep = (sum > Doubles(kAreaRoundOff)) & (u >= Doubles(0.0)) & (u < Doubles(width_));
-    return xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
-  }
-
- private:
-  Doubles offsets_;  // 0, 1, .. kLanes - 1
-  Doubles left_[3], right_[3], upper_[3], ramp_[3];
-  Doubles start_[3], twice_start_[3], end_[3], whole_[3];
-  double width_;
-};
 
 // The triangle's edges from its vertices, x measured from origin_x (pixels).
 inline void set_up_area_edges(const AreaTriangle& tri, std::int32_t origin_x, AreaEdge* edges) {
@@ -182,9 +128,10 @@ inline void set_up_area_edges(const AreaTriangle& tri, std::int32_t origin_x, Ar
     edge.right = static_cast<double>((dx < 0 ? tri.x[e] : tri.x[j]) - origin) / 256.0;
     edge.x0 = static_cast<double>(tri.x[e] - origin) / 256.0;
     edge.y0 = static_cast<double>(tri.y[e]) / 256.0;
-    edge.y_low = dy < 0 ? tri.y[j] : tri.y[e];
-    edge.y_high = dy < 0 ? tri.y[e] : tri.y[j];
+    edge.y_low = static_cast<double>(dy < 0 ? tri.y[j] : tri.y[e]) / 256.0;
+    edge.y_high = static_cast<double>(dy < 0 ? tri.y[e] : tri.y[j]) / 256.0;
     edge.horizontal = dy == 0;
+    edge.no_ramp = edge.horizontal ? kNoRamp : 0.0;
     edge.rising = (dx > 0) == (dy > 0);
     edge.inverse_slope = dy == 0 ? 0.0 : static_cast<double>(dx) / static_cast<double>(dy);
     edge.sign = dx == 0 ? 0.0 : (dx > 0 ? tri.orientation : -tri.orientation);
@@ -199,134 +146,223 @@ inline void set_up_area_edges(const AreaTriangle& tri, std::int32_t origin_x, Ar
   }
 }
 
-// Candidate pixels of one band: up to three ranges, one per edge piece, [begin, end), from the
-// origin, not clipped.
-struct BandRanges {
-  std::int32_t begin[3], end[3];
-  int count = 0;
-};
-
 // Pixel ranges are widened by this (pixels) each way: far more than the crossings' error
 // (2^-35), so a pixel a piece touches is never left out; a pixel it only grazes gets its area
 // computed, which is exact too.
 inline constexpr double kRangeMargin = 1.0 / 256.0;
+
+// The rows of one tile row, per edge and row: the ramp [start, end] and the weight of
+// (hi - lo), and the pixels the edge's piece in the row touches, [first, last] from the origin
+// (first > last where it has none).
+struct TileRowBands {
+  alignas(64) double start[3][kTileSize];
+  alignas(64) double end[3][kTileSize];
+  alignas(64) double whole[3][kTileSize];
+  alignas(64) double first[3][kTileSize];
+  alignas(64) double last[3][kTileSize];
+};
+
+// Fills `bands` for the rows top_row .. top_row + 7, kLanes rows at a time.
+template <class Arch>
+void set_up_bands(const AreaEdge* edges, std::int32_t top_row, double width, TileRowBands& bands) {
+  using Doubles = xsimd::batch<double, Arch>;
+  constexpr std::size_t kLanes = Doubles::size;
+  alignas(64) double offsets[kLanes];
+  for (std::size_t l = 0; l < kLanes; ++l)
+    offsets[l] = static_cast<double>(l);
+  const Doubles lane_rows = Doubles::load_aligned(offsets);
+  for (int e = 0; e < 3; ++e) {
+    const AreaEdge& edge = edges[e];
+    for (std::size_t k = 0; k < kTileSize; k += kLanes) {
+      const Doubles top_y = Doubles(static_cast<double>(top_row) + static_cast<double>(k)) + lane_rows;
+      const Doubles bottom_y = top_y + Doubles(1.0);
+      const Doubles top = xsimd::fma(top_y - Doubles(edge.y0), Doubles(edge.inverse_slope),
+                                     Doubles(edge.x0));
+      const Doubles bottom = xsimd::fma(bottom_y - Doubles(edge.y0), Doubles(edge.inverse_slope),
+                                        Doubles(edge.x0));
+      const Doubles no_ramp(edge.no_ramp);
+      const Doubles ramp_start = (edge.rising ? top : bottom) + no_ramp;
+      const Doubles ramp_end = (edge.rising ? bottom : top) + no_ramp;
+      ramp_start.store_aligned(&bands.start[e][k]);
+      ramp_end.store_aligned(&bands.end[e][k]);
+      if (edge.horizontal) {
+        const Doubles height = xsimd::min(xsimd::max(Doubles(edge.y0) - top_y, Doubles(0.0)),
+                                          Doubles(1.0));
+        (height * Doubles(edge.sign)).store_aligned(&bands.whole[e][k]);
+      } else {
+        Doubles(edge.whole_weight).store_aligned(&bands.whole[e][k]);
+      }
+      // The piece's x extent: the line's over the band, within the edge's (all of it when
+      // horizontal); none where the edge does not reach the band.
+      const Doubles left =
+          xsimd::max(xsimd::min(top, bottom) - no_ramp, Doubles(edge.left)) - Doubles(kRangeMargin);
+      const Doubles right = xsimd::min(xsimd::max(top, bottom) + no_ramp, Doubles(edge.right)) +
+                            Doubles(kRangeMargin);
+      const auto reaches = (Doubles(edge.y_low) <= bottom_y) & (Doubles(edge.y_high) >= top_y);
+      // Clamped to a pixel beyond either side of the box, to convert to int32 safely.
+      const Doubles first = xsimd::select(
+          reaches, xsimd::max(xsimd::floor(left), Doubles(-1.0)), Doubles(width + 1.0));
+      const Doubles last = xsimd::select(
+          reaches, xsimd::min(xsimd::floor(right), Doubles(width + 1.0)), Doubles(-1.0));
+      first.store_aligned(&bands.first[e][k]);
+      last.store_aligned(&bands.last[e][k]);
+    }
+  }
+}
+
+// The per-lane arithmetic: an edge's constants for the triangle and for the current row, and
+// the areas of kLanes consecutive pixels.
+template <class Arch>
+class AreaLanes {
+ public:
+  using Doubles = xsimd::batch<double, Arch>;
+  static constexpr std::size_t kLanes = Doubles::size;
+
+  // Pixels outside columns [x_begin, x_end) (from the origin) get 0.
+  AreaLanes(const AreaEdge* edges, double x_begin, double x_end)
+      : x_begin_(x_begin), x_end_(x_end) {
+    alignas(64) double offsets[kLanes];
+    for (std::size_t l = 0; l < kLanes; ++l)
+      offsets[l] = static_cast<double>(l);
+    offsets_ = Doubles::load_aligned(offsets);
+    for (int e = 0; e < 3; ++e) {
+      left_[e] = Doubles(edges[e].left);
+      right_[e] = Doubles(edges[e].right);
+      upper_[e] = Doubles(edges[e].upper_weight);
+      ramp_[e] = Doubles(edges[e].ramp_weight);
+    }
+  }
+
+  // Row r's constants of every edge.
+  void set_row(const TileRowBands& bands, int r) {
+    for (int e = 0; e < 3; ++e) {
+      start_[e] = Doubles(bands.start[e][r]);
+      twice_start_[e] = start_[e] + start_[e];
+      end_[e] = Doubles(bands.end[e][r]);
+      whole_[e] = Doubles(bands.whole[e][r]);
+    }
+  }
+
+  // Areas of the pixels whose columns start at first + lane (from the origin).
+  Doubles areas(double first) const {
+    const Doubles u = Doubles(first) + offsets_;
+    const Doubles u1 = u + Doubles(1.0);
+    Doubles sum(0.0);
+    for (int e = 0; e < 3; ++e) {
+      const Doubles lo = xsimd::min(xsimd::max(left_[e], u), u1);
+      const Doubles hi = xsimd::min(xsimd::max(right_[e], u), u1);
+      const Doubles a = xsimd::min(xsimd::max(start_[e], lo), hi);
+      const Doubles b = xsimd::min(xsimd::max(end_[e], lo), hi);
+      sum = xsimd::fma(whole_[e], hi - lo, sum);
+      sum = xsimd::fma(upper_[e], hi - b, sum);
+      sum = xsimd::fma(ramp_[e], (b - a) * ((a + b) - twice_start_[e]), sum);
+    }
+    const auto keep =
+        (sum > Doubles(kAreaRoundOff)) & (u >= Doubles(x_begin_)) & (u < Doubles(x_end_));
+    return xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
+  }
+
+ private:
+  Doubles offsets_;  // 0, 1, .. kLanes - 1
+  Doubles left_[3], right_[3], upper_[3], ramp_[3];
+  Doubles start_[3], twice_start_[3], end_[3], whole_[3];
+  double x_begin_, x_end_;
+};
 
 // Walks a triangle's box a tile row at a time and hands its tiles to `emit` (AreaTile&) in row
 // order. `row_tiles` is the caller's storage, reused from triangle to triangle.
 template <class Arch, class Emit>
 void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
                 std::uint32_t triangle, Emit&& emit) {
-  using Lanes = AreaLanes<WideArch<Arch>>;
+  using Wide = WideArch<Arch>;
+  using Lanes = AreaLanes<Wide>;
+  using Floats = xsimd::batch<float, Arch>;
   constexpr std::int32_t kLanes = static_cast<std::int32_t>(Lanes::kLanes);
+  constexpr int kFloatLanes = static_cast<int>(Floats::size);
   static_assert(kTileSize % kLanes == 0, "a group of lanes never straddles a tile");
-  AreaEdge edges[3];
-  set_up_area_edges(tri, box.x0, edges);
-  Lanes lanes(edges, static_cast<double>(box.x1 - box.x0));
   const std::int32_t first_tile_x = box.x0 / kTileSize;
+  const std::int32_t origin = first_tile_x * kTileSize;
+  const std::int32_t x_begin = box.x0 - origin, x_end = box.x1 - origin;
   const std::int32_t columns = (box.x1 - 1) / kTileSize - first_tile_x + 1;
+  AreaEdge edges[3];
+  set_up_area_edges(tri, origin, edges);
+  Lanes lanes(edges, static_cast<double>(x_begin), static_cast<double>(x_end));
   row_tiles.resize(static_cast<std::size_t>(columns));
-  // The crossings of each edge's line with the top of the current band.
-  double top_crossing[3];
-  for (int e = 0; e < 3; ++e)
-    top_crossing[e] = edges[e].crossing(static_cast<double>(box.y0));
+  alignas(64) float column_offsets[kFloatLanes];
+  for (int l = 0; l < kFloatLanes; ++l)
+    column_offsets[l] = static_cast<float>(l);
+  const Floats lane_columns = Floats::load_aligned(column_offsets);
+  TileRowBands bands;
   for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
+    const int r_begin = box.y0 > ty * kTileSize ? box.y0 - ty * kTileSize : 0;
+    const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
+    set_up_bands<Wide>(edges, ty * kTileSize, static_cast<double>(x_end), bands);
     for (std::int32_t c = 0; c < columns; ++c) {
       AreaTile& tile = row_tiles[static_cast<std::size_t>(c)];
       tile.triangle = triangle;
       tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
       tile.tile_y = static_cast<std::uint16_t>(ty);
-      for (float& a : tile.area)
-        a = 0.0f;
+      // Rows outside the box stay empty.
+      for (int r = 0; r < kTileSize; ++r) {
+        if (r >= r_begin && r < r_end) continue;
+        for (int k = 0; k < kTileSize; k += kFloatLanes)
+          Floats(0.0f).store_unaligned(tile.area + r * kTileSize + k);
+      }
     }
-    // Pixels [x_begin, x_end) of row y lie wholly inside.
-    const auto fill_whole = [&](std::int32_t y, std::int32_t x_begin, std::int32_t x_end) {
-      const int row = y % kTileSize;
-      for (std::int32_t x = x_begin; x < x_end; ++x) {
-        AreaTile& tile = row_tiles[static_cast<std::size_t>(x / kTileSize - first_tile_x)];
-        tile.area[row * kTileSize + x % kTileSize] = 1.0f;
-      }
-    };
-    const std::int32_t y_begin = ty * kTileSize > box.y0 ? ty * kTileSize : box.y0;
-    const std::int32_t y_end = (ty + 1) * kTileSize < box.y1 ? (ty + 1) * kTileSize : box.y1;
-    for (std::int32_t y = y_begin; y < y_end; ++y) {
-      const std::int64_t band_top = std::int64_t{y} * 256, band_bottom = band_top + 256;
-      BandRanges ranges;
+    for (int r = r_begin; r < r_end; ++r) {
+      // The candidates of each edge, clipped to the box.
+      std::int32_t first[3], end[3];
       for (int e = 0; e < 3; ++e) {
-        const AreaEdge& edge = edges[e];
-        const double top = top_crossing[e];
-        const double bottom = edge.crossing(static_cast<double>(y + 1));
-        top_crossing[e] = bottom;
-        if (edge.horizontal) {
-          const double height = edge.y0 - static_cast<double>(y);
-          const double clamped = height < 0.0 ? 0.0 : (height > 1.0 ? 1.0 : height);
-          lanes.set_band(e, kNoRamp, kNoRamp, edge.sign * clamped);
-        } else if (edge.rising) {
-          lanes.set_band(e, top, bottom, edge.whole_weight);
-        } else {
-          lanes.set_band(e, bottom, top, edge.whole_weight);
-        }
-        if (edge.y_high < band_top || edge.y_low > band_bottom) continue;
-        double left = edge.left, right = edge.right;
-        if (!edge.horizontal) {
-          const double low = top < bottom ? top : bottom, high = top < bottom ? bottom : top;
-          left = low > left ? low : left;
-          right = high < right ? high : right;
-        }
-        ranges.begin[ranges.count] = static_cast<std::int32_t>(std::floor(left - kRangeMargin));
-        ranges.end[ranges.count] = static_cast<std::int32_t>(std::floor(right + kRangeMargin)) + 1;
-        ++ranges.count;
+        const std::int32_t f = static_cast<std::int32_t>(bands.first[e][r]);
+        const std::int32_t l = static_cast<std::int32_t>(bands.last[e][r]) + 1;
+        first[e] = f > x_begin ? f : x_begin;
+        end[e] = l < x_end ? l : x_end;
       }
-      if (ranges.count == 0) continue;
-      // The candidates as disjoint runs in x order, clipped to the box; between the first and
-      // the last, the gaps are whole pixels. (From here on x is the pixel's own.)
-      std::int32_t begin[3], end[3];
-      int runs = 0;
-      std::int32_t span_begin = box.x1, span_end = box.x0;
-      for (int r = 0; r < ranges.count; ++r) {
-        const std::int32_t rb = ranges.begin[r] + box.x0, re = ranges.end[r] + box.x0;
-        const std::int32_t b = rb < box.x0 ? box.x0 : rb;
-        const std::int32_t e = re > box.x1 ? box.x1 : re;
-        span_begin = rb < span_begin ? rb : span_begin;
-        span_end = re > span_end ? re : span_end;
-        if (b >= e) continue;
-        int at = runs++;
-        for (; at > 0 && begin[at - 1] > b; --at) {
-          begin[at] = begin[at - 1];
-          end[at] = end[at - 1];
+      // Between the first candidate and the last, pixels no piece touches are whole: the row
+      // starts as 1 there and 0 elsewhere, and the candidates' areas replace it.
+      std::int32_t span_first = first[0] < first[1] ? first[0] : first[1];
+      span_first = first[2] < span_first ? first[2] : span_first;
+      std::int32_t span_end = end[0] > end[1] ? end[0] : end[1];
+      span_end = end[2] > span_end ? end[2] : span_end;
+      const Floats span_from(static_cast<float>(span_first)), span_to(static_cast<float>(span_end));
+      for (std::int32_t c = 0; c < columns; ++c) {
+        float* row = row_tiles[static_cast<std::size_t>(c)].area + r * kTileSize;
+        for (int k = 0; k < kTileSize; k += kFloatLanes) {
+          const Floats x = lane_columns + Floats(static_cast<float>(c * kTileSize + k));
+          xsimd::select((x >= span_from) & (x < span_to), Floats(1.0f), Floats(0.0f))
+              .store_unaligned(row + k);
         }
-        begin[at] = b;
-        end[at] = e;
       }
-      span_begin = span_begin < box.x0 ? box.x0 : span_begin;
-      span_end = span_end > box.x1 ? box.x1 : span_end;
-      const int row = y % kTileSize;
-      std::int32_t covered_to = span_begin;  // pixels below this are decided
-      std::int32_t computed_to = 0;          // groups below this are computed (aligned)
-      for (int r = 0; r < runs; ++r) {
-        if (begin[r] > covered_to) fill_whole(y, covered_to, begin[r]);
-        std::int32_t x = begin[r] - begin[r] % kLanes;
+      if (span_first >= span_end) continue;
+      // The candidates in x order: groups of lanes computed once.
+      const auto order = [&](int i, int j) {
+        if (first[j] < first[i]) {
+          std::swap(first[i], first[j]);
+          std::swap(end[i], end[j]);
+        }
+      };
+      order(0, 1);
+      order(1, 2);
+      order(0, 1);
+      lanes.set_row(bands, r);
+      std::int32_t computed_to = 0;  // groups below this are computed (aligned)
+      for (int e = 0; e < 3; ++e) {
+        std::int32_t x = first[e] - first[e] % kLanes;
         x = x > computed_to ? x : computed_to;
-        for (; x < end[r]; x += kLanes) {
-          AreaTile& tile = row_tiles[static_cast<std::size_t>(x / kTileSize - first_tile_x)];
-          store_as_floats(lanes.areas(static_cast<double>(x - box.x0)),
-                          tile.area + row * kTileSize + x % kTileSize);
+        for (; x < end[e]; x += kLanes) {
+          float* row = row_tiles[static_cast<std::size_t>(x / kTileSize)].area + r * kTileSize;
+          store_as_floats(lanes.areas(static_cast<double>(x)), row + x % kTileSize);
         }
         computed_to = x > computed_to ? x : computed_to;
-        covered_to = end[r] > covered_to ? end[r] : covered_to;
       }
-      if (span_end > covered_to) fill_whole(y, covered_to, span_end);
     }
-    // Masks from the areas: the rows of the band.
-    using Floats = xsimd::batch<float, Arch>;
-    constexpr int kFloatLanes = static_cast<int>(Floats::size);
+    // Masks from the areas, over the rows of the box.
     for (AreaTile& tile : row_tiles) {
       std::uint64_t mask = 0;
-      for (std::int32_t y = y_begin; y < y_end; ++y) {
-        const int row = y % kTileSize;
-        for (int c = 0; c < kTileSize; c += kFloatLanes) {
-          const Floats area = Floats::load_unaligned(tile.area + row * kTileSize + c);
-          mask |= std::uint64_t{bits_of_lanes<Arch>(area > Floats(0.0f))}
-                  << (row * kTileSize + c);
+      for (int r = r_begin; r < r_end; ++r) {
+        for (int k = 0; k < kTileSize; k += kFloatLanes) {
+          const Floats area = Floats::load_unaligned(tile.area + r * kTileSize + k);
+          mask |= std::uint64_t{bits_of_lanes<Arch>(area > Floats(0.0f))} << (r * kTileSize + k);
         }
       }
       tile.mask = mask;
