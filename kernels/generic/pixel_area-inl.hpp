@@ -99,6 +99,37 @@ inline void store_as_floats(xsimd::batch<double, Arch> v, float* out) {
   }
 }
 
+// Bit l set where lane l of `v` is positive.
+template <class Arch>
+inline std::uint32_t positive_lanes(xsimd::batch<double, Arch> v) {
+#if defined(__AVX512F__)
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    return _mm512_cmp_pd_mask(v, _mm512_setzero_pd(), _CMP_GT_OQ);
+  } else
+#endif
+#if defined(__AVX2__)
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    return static_cast<std::uint32_t>(
+        _mm256_movemask_pd(_mm256_cmp_pd(v, _mm256_setzero_pd(), _CMP_GT_OQ)));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    return static_cast<std::uint32_t>(_mm_movemask_pd(_mm_cmpgt_pd(v, _mm_setzero_pd())));
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    const uint64x2_t positive = vcgtzq_f64(v);
+    return static_cast<std::uint32_t>((vgetq_lane_u64(positive, 0) & 1) |
+                                      (vgetq_lane_u64(positive, 1) & 2));
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "positive_lanes: no implementation for this architecture");
+  }
+}
+
 // One edge of a triangle, in pixels, x from the walk's origin (the left side of the box's first
 // tile).
 struct AreaEdge {
@@ -151,123 +182,114 @@ inline void set_up_area_edges(const AreaTriangle& tri, std::int32_t origin_x, Ar
 // computed, which is exact too.
 inline constexpr double kRangeMargin = 1.0 / 256.0;
 
-// The rows of one tile row, per edge and row: the ramp [start, end] and the weight of
-// (hi - lo), and the pixels the edge's piece in the row touches, [first, last] from the origin
-// (first > last where it has none).
+// The rows of one tile row, per edge and row. An edge that reaches the row's band has a ramp:
+// [start, end] clamped to the edge's extent, and 2 A from the line itself; one wholly below the
+// band adds whole (hi - lo) (so does a horizontal edge, with whole its clamped height); one
+// above adds nothing (whole = 0). [first, last]: the pixels the edge's piece in the band
+// touches, from the origin (first > last where it has none).
 struct TileRowBands {
   alignas(64) double start[3][kTileSize];
   alignas(64) double end[3][kTileSize];
+  alignas(64) double twice_start[3][kTileSize];
   alignas(64) double whole[3][kTileSize];
+  alignas(64) double ramp[3][kTileSize];  // 1 where the edge has a ramp, else 0
   alignas(64) double first[3][kTileSize];
   alignas(64) double last[3][kTileSize];
 };
 
-// Fills `bands` for the rows top_row .. top_row + 7, kLanes rows at a time.
+// Fills `bands` for rows top_row + r_begin .. top_row + r_end - 1, kLanes rows at a time.
 template <class Arch>
-void set_up_bands(const AreaEdge* edges, std::int32_t top_row, double width, TileRowBands& bands) {
+void set_up_bands(const AreaEdge* edges, std::int32_t top_row, int r_begin, int r_end,
+                  double width, TileRowBands& bands) {
   using Doubles = xsimd::batch<double, Arch>;
-  constexpr std::size_t kLanes = Doubles::size;
+  constexpr int kLanes = static_cast<int>(Doubles::size);
   alignas(64) double offsets[kLanes];
-  for (std::size_t l = 0; l < kLanes; ++l)
+  for (int l = 0; l < kLanes; ++l)
     offsets[l] = static_cast<double>(l);
   const Doubles lane_rows = Doubles::load_aligned(offsets);
+  const Doubles zero(0.0), one(1.0);
   for (int e = 0; e < 3; ++e) {
     const AreaEdge& edge = edges[e];
-    for (std::size_t k = 0; k < kTileSize; k += kLanes) {
-      const Doubles top_y = Doubles(static_cast<double>(top_row) + static_cast<double>(k)) + lane_rows;
-      const Doubles bottom_y = top_y + Doubles(1.0);
+    const Doubles left(edge.left), right(edge.right), no_ramp(edge.no_ramp);
+    for (int k = r_begin - r_begin % kLanes; k < r_end; k += kLanes) {
+      const Doubles top_y = Doubles(static_cast<double>(top_row + k)) + lane_rows;
+      const Doubles bottom_y = top_y + one;
       const Doubles top = xsimd::fma(top_y - Doubles(edge.y0), Doubles(edge.inverse_slope),
                                      Doubles(edge.x0));
       const Doubles bottom = xsimd::fma(bottom_y - Doubles(edge.y0), Doubles(edge.inverse_slope),
                                         Doubles(edge.x0));
-      const Doubles no_ramp(edge.no_ramp);
       const Doubles ramp_start = (edge.rising ? top : bottom) + no_ramp;
       const Doubles ramp_end = (edge.rising ? bottom : top) + no_ramp;
-      ramp_start.store_aligned(&bands.start[e][k]);
-      ramp_end.store_aligned(&bands.end[e][k]);
+      xsimd::min(xsimd::max(ramp_start, left), right).store_aligned(&bands.start[e][k]);
+      xsimd::min(xsimd::max(ramp_end, left), right).store_aligned(&bands.end[e][k]);
+      (ramp_start + ramp_start).store_aligned(&bands.twice_start[e][k]);
+      const auto reaches = (Doubles(edge.y_low) <= bottom_y) & (Doubles(edge.y_high) >= top_y);
+      const auto below = Doubles(edge.y_low) > bottom_y;
+      Doubles whole = xsimd::select(below, Doubles(edge.sign), zero);
+      Doubles ramp = xsimd::select(reaches, one, zero);
       if (edge.horizontal) {
-        const Doubles height = xsimd::min(xsimd::max(Doubles(edge.y0) - top_y, Doubles(0.0)),
-                                          Doubles(1.0));
-        (height * Doubles(edge.sign)).store_aligned(&bands.whole[e][k]);
-      } else {
-        Doubles(edge.whole_weight).store_aligned(&bands.whole[e][k]);
+        whole = xsimd::min(xsimd::max(Doubles(edge.y0) - top_y, zero), one) * Doubles(edge.sign);
+        ramp = zero;
+      } else if (edge.sign == 0.0) {
+        ramp = zero;  // vertical: no x extent, nothing to add
       }
+      whole.store_aligned(&bands.whole[e][k]);
+      ramp.store_aligned(&bands.ramp[e][k]);
       // The piece's x extent: the line's over the band, within the edge's (all of it when
       // horizontal); none where the edge does not reach the band.
-      const Doubles left =
-          xsimd::max(xsimd::min(top, bottom) - no_ramp, Doubles(edge.left)) - Doubles(kRangeMargin);
-      const Doubles right = xsimd::min(xsimd::max(top, bottom) + no_ramp, Doubles(edge.right)) +
-                            Doubles(kRangeMargin);
-      const auto reaches = (Doubles(edge.y_low) <= bottom_y) & (Doubles(edge.y_high) >= top_y);
+      const Doubles piece_left =
+          xsimd::max(xsimd::min(top, bottom) - no_ramp, left) - Doubles(kRangeMargin);
+      const Doubles piece_right =
+          xsimd::min(xsimd::max(top, bottom) + no_ramp, right) + Doubles(kRangeMargin);
       // Clamped to a pixel beyond either side of the box, to convert to int32 safely.
       const Doubles first = xsimd::select(
-          reaches, xsimd::max(xsimd::floor(left), Doubles(-1.0)), Doubles(width + 1.0));
+          reaches, xsimd::max(xsimd::floor(piece_left), Doubles(-1.0)), Doubles(width + 1.0));
       const Doubles last = xsimd::select(
-          reaches, xsimd::min(xsimd::floor(right), Doubles(width + 1.0)), Doubles(-1.0));
+          reaches, xsimd::min(xsimd::floor(piece_right), Doubles(width + 1.0)), Doubles(-1.0));
       first.store_aligned(&bands.first[e][k]);
       last.store_aligned(&bands.last[e][k]);
     }
   }
 }
 
-// The per-lane arithmetic: an edge's constants for the triangle and for the current row, and
-// the areas of kLanes consecutive pixels.
+// One row's edges as the lanes use them: those with a ramp first, then those that add
+// whole (hi - lo).
 template <class Arch>
-class AreaLanes {
- public:
+struct RowEdges {
   using Doubles = xsimd::batch<double, Arch>;
-  static constexpr std::size_t kLanes = Doubles::size;
-
-  // Pixels outside columns [x_begin, x_end) (from the origin) get 0.
-  AreaLanes(const AreaEdge* edges, double x_begin, double x_end)
-      : x_begin_(x_begin), x_end_(x_end) {
-    alignas(64) double offsets[kLanes];
-    for (std::size_t l = 0; l < kLanes; ++l)
-      offsets[l] = static_cast<double>(l);
-    offsets_ = Doubles::load_aligned(offsets);
-    for (int e = 0; e < 3; ++e) {
-      left_[e] = Doubles(edges[e].left);
-      right_[e] = Doubles(edges[e].right);
-      upper_[e] = Doubles(edges[e].upper_weight);
-      ramp_[e] = Doubles(edges[e].ramp_weight);
-    }
-  }
-
-  // Row r's constants of every edge.
-  void set_row(const TileRowBands& bands, int r) {
-    for (int e = 0; e < 3; ++e) {
-      start_[e] = Doubles(bands.start[e][r]);
-      twice_start_[e] = start_[e] + start_[e];
-      end_[e] = Doubles(bands.end[e][r]);
-      whole_[e] = Doubles(bands.whole[e][r]);
-    }
-  }
-
-  // Areas of the pixels whose columns start at first + lane (from the origin).
-  Doubles areas(double first) const {
-    const Doubles u = Doubles(first) + offsets_;
-    const Doubles u1 = u + Doubles(1.0);
-    Doubles sum(0.0);
-    for (int e = 0; e < 3; ++e) {
-      const Doubles lo = xsimd::min(xsimd::max(left_[e], u), u1);
-      const Doubles hi = xsimd::min(xsimd::max(right_[e], u), u1);
-      const Doubles a = xsimd::min(xsimd::max(start_[e], lo), hi);
-      const Doubles b = xsimd::min(xsimd::max(end_[e], lo), hi);
-      sum = xsimd::fma(whole_[e], hi - lo, sum);
-      sum = xsimd::fma(upper_[e], hi - b, sum);
-      sum = xsimd::fma(ramp_[e], (b - a) * ((a + b) - twice_start_[e]), sum);
-    }
-    const auto keep =
-        (sum > Doubles(kAreaRoundOff)) & (u >= Doubles(x_begin_)) & (u < Doubles(x_end_));
-    return xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
-  }
-
- private:
-  Doubles offsets_;  // 0, 1, .. kLanes - 1
-  Doubles left_[3], right_[3], upper_[3], ramp_[3];
-  Doubles start_[3], twice_start_[3], end_[3], whole_[3];
-  double x_begin_, x_end_;
+  // Ramp edges: X is the edge's right end where y rises with x (the edge adds
+  // upper (X - b) + ramp (b - a) ((a + b) - 2 A)), its left end where y falls.
+  Doubles extent[3], start[3], end[3], twice_start[3], upper[3], ramp[3];
+  // Whole edges: whole (hi - lo).
+  Doubles left[3], right[3], whole[3];
 };
+
+// Areas of the pixels whose columns start at u (from the origin): the sum over the row's
+// edges, of which kRamp have a ramp and kWhole add whole (hi - lo); round-off below
+// kAreaRoundOff and pixels outside [x_begin, x_end) give 0.
+template <int kRamp, int kWhole, class Arch>
+inline xsimd::batch<double, Arch> row_areas(const RowEdges<Arch>& edges,
+                                            xsimd::batch<double, Arch> u,
+                                            xsimd::batch<double, Arch> x_begin,
+                                            xsimd::batch<double, Arch> x_end) {
+  using Doubles = xsimd::batch<double, Arch>;
+  const Doubles u1 = u + Doubles(1.0);
+  Doubles sum(0.0);
+  for (int e = 0; e < kRamp; ++e) {
+    const Doubles x = xsimd::min(xsimd::max(edges.extent[e], u), u1);
+    const Doubles a = xsimd::min(xsimd::max(edges.start[e], u), u1);
+    const Doubles b = xsimd::min(xsimd::max(edges.end[e], u), u1);
+    sum = xsimd::fma(edges.upper[e], x - b, sum);
+    sum = xsimd::fma(edges.ramp[e], (b - a) * ((a + b) - edges.twice_start[e]), sum);
+  }
+  for (int e = 0; e < kWhole; ++e) {
+    const Doubles lo = xsimd::min(xsimd::max(edges.left[e], u), u1);
+    const Doubles hi = xsimd::min(xsimd::max(edges.right[e], u), u1);
+    sum = xsimd::fma(edges.whole[e], hi - lo, sum);
+  }
+  const auto keep = (sum > Doubles(kAreaRoundOff)) & (u >= x_begin) & (u < x_end);
+  return xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
+}
 
 // Walks a triangle's box a tile row at a time and hands its tiles to `emit` (AreaTile&) in row
 // order. `row_tiles` is the caller's storage, reused from triangle to triangle.
@@ -275,40 +297,34 @@ template <class Arch, class Emit>
 void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
                 std::uint32_t triangle, Emit&& emit) {
   using Wide = WideArch<Arch>;
-  using Lanes = AreaLanes<Wide>;
+  using Doubles = xsimd::batch<double, Wide>;
   using Floats = xsimd::batch<float, Arch>;
-  constexpr std::int32_t kLanes = static_cast<std::int32_t>(Lanes::kLanes);
+  constexpr std::int32_t kLanes = static_cast<std::int32_t>(Doubles::size);
   constexpr int kFloatLanes = static_cast<int>(Floats::size);
   static_assert(kTileSize % kLanes == 0, "a group of lanes never straddles a tile");
+  constexpr std::uint64_t kGroupBits = (std::uint64_t{1} << kLanes) - 1;
+  // Tiles not yet touched in the current tile row.
+  constexpr std::uint16_t kUntouched = 0xFFFF;
   const std::int32_t first_tile_x = box.x0 / kTileSize;
   const std::int32_t origin = first_tile_x * kTileSize;
   const std::int32_t x_begin = box.x0 - origin, x_end = box.x1 - origin;
   const std::int32_t columns = (box.x1 - 1) / kTileSize - first_tile_x + 1;
   AreaEdge edges[3];
   set_up_area_edges(tri, origin, edges);
-  Lanes lanes(edges, static_cast<double>(x_begin), static_cast<double>(x_end));
   row_tiles.resize(static_cast<std::size_t>(columns));
-  alignas(64) float column_offsets[kFloatLanes];
-  for (int l = 0; l < kFloatLanes; ++l)
-    column_offsets[l] = static_cast<float>(l);
-  const Floats lane_columns = Floats::load_aligned(column_offsets);
+  alignas(64) double lane_offsets[kLanes];
+  for (int l = 0; l < kLanes; ++l)
+    lane_offsets[l] = static_cast<double>(l);
+  const Doubles lane_columns = Doubles::load_aligned(lane_offsets);
+  const Doubles box_begin(static_cast<double>(x_begin)), box_end(static_cast<double>(x_end));
   TileRowBands bands;
+  RowEdges<Wide> row_edges;
   for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
     const int r_begin = box.y0 > ty * kTileSize ? box.y0 - ty * kTileSize : 0;
     const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
-    set_up_bands<Wide>(edges, ty * kTileSize, static_cast<double>(x_end), bands);
-    for (std::int32_t c = 0; c < columns; ++c) {
-      AreaTile& tile = row_tiles[static_cast<std::size_t>(c)];
-      tile.triangle = triangle;
-      tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
-      tile.tile_y = static_cast<std::uint16_t>(ty);
-      // Rows outside the box stay empty.
-      for (int r = 0; r < kTileSize; ++r) {
-        if (r >= r_begin && r < r_end) continue;
-        for (int k = 0; k < kTileSize; k += kFloatLanes)
-          Floats(0.0f).store_unaligned(tile.area + r * kTileSize + k);
-      }
-    }
+    set_up_bands<Wide>(edges, ty * kTileSize, r_begin, r_end, static_cast<double>(x_end), bands);
+    for (AreaTile& tile : row_tiles)
+      tile.tile_y = kUntouched;
     for (int r = r_begin; r < r_end; ++r) {
       // The candidates of each edge, clipped to the box.
       std::int32_t first[3], end[3];
@@ -318,22 +334,52 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
         first[e] = f > x_begin ? f : x_begin;
         end[e] = l < x_end ? l : x_end;
       }
-      // Between the first candidate and the last, pixels no piece touches are whole: the row
-      // starts as 1 there and 0 elsewhere, and the candidates' areas replace it.
       std::int32_t span_first = first[0] < first[1] ? first[0] : first[1];
       span_first = first[2] < span_first ? first[2] : span_first;
       std::int32_t span_end = end[0] > end[1] ? end[0] : end[1];
       span_end = end[2] > span_end ? end[2] : span_end;
-      const Floats span_from(static_cast<float>(span_first)), span_to(static_cast<float>(span_end));
-      for (std::int32_t c = 0; c < columns; ++c) {
-        float* row = row_tiles[static_cast<std::size_t>(c)].area + r * kTileSize;
+      if (span_first >= span_end) continue;
+      // Between the first candidate and the last, pixels no piece touches are whole: the row
+      // of each tile the span reaches starts as 1 there and 0 elsewhere (a tile is cleared
+      // when first reached), and the candidates' areas replace it.
+      for (std::int32_t c = span_first / kTileSize; c <= (span_end - 1) / kTileSize; ++c) {
+        AreaTile& tile = row_tiles[static_cast<std::size_t>(c)];
+        if (tile.tile_y == kUntouched) {
+          tile.triangle = triangle;
+          tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
+          tile.tile_y = static_cast<std::uint16_t>(ty);
+          tile.mask = 0;
+          for (int k = 0; k < kTileSize * kTileSize; k += kFloatLanes)
+            Floats(0.0f).store_unaligned(tile.area + k);
+        }
+        const std::int32_t from = span_first - c * kTileSize, to = span_end - c * kTileSize;
+        const std::uint32_t whole = (0xFFu >> (to < kTileSize ? kTileSize - to : 0)) &
+                                    (0xFFu << (from > 0 ? from : 0));
         for (int k = 0; k < kTileSize; k += kFloatLanes) {
-          const Floats x = lane_columns + Floats(static_cast<float>(c * kTileSize + k));
-          xsimd::select((x >= span_from) & (x < span_to), Floats(1.0f), Floats(0.0f))
-              .store_unaligned(row + k);
+          xsimd::select(lanes_of_bits<Arch>(whole >> k), Floats(1.0f), Floats(0.0f))
+              .store_unaligned(tile.area + r * kTileSize + k);
+        }
+        tile.mask |= std::uint64_t{whole} << (r * kTileSize);
+      }
+      // The row's edges: those with a ramp first.
+      int ramps = 0, wholes = 0;
+      for (int e = 0; e < 3; ++e) {
+        if (bands.ramp[e][r] != 0.0) {
+          const AreaEdge& edge = edges[e];
+          row_edges.extent[ramps] = Doubles(edge.rising ? edge.right : edge.left);
+          row_edges.start[ramps] = Doubles(bands.start[e][r]);
+          row_edges.end[ramps] = Doubles(bands.end[e][r]);
+          row_edges.twice_start[ramps] = Doubles(bands.twice_start[e][r]);
+          row_edges.upper[ramps] = Doubles(edge.upper_weight);
+          row_edges.ramp[ramps] = Doubles(edge.ramp_weight);
+          ++ramps;
+        } else if (bands.whole[e][r] != 0.0) {
+          row_edges.left[wholes] = Doubles(edges[e].left);
+          row_edges.right[wholes] = Doubles(edges[e].right);
+          row_edges.whole[wholes] = Doubles(bands.whole[e][r]);
+          ++wholes;
         }
       }
-      if (span_first >= span_end) continue;
       // The candidates in x order: groups of lanes computed once.
       const auto order = [&](int i, int j) {
         if (first[j] < first[i]) {
@@ -344,29 +390,38 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
       order(0, 1);
       order(1, 2);
       order(0, 1);
-      lanes.set_row(bands, r);
-      std::int32_t computed_to = 0;  // groups below this are computed (aligned)
-      for (int e = 0; e < 3; ++e) {
-        std::int32_t x = first[e] - first[e] % kLanes;
-        x = x > computed_to ? x : computed_to;
-        for (; x < end[e]; x += kLanes) {
-          float* row = row_tiles[static_cast<std::size_t>(x / kTileSize)].area + r * kTileSize;
-          store_as_floats(lanes.areas(static_cast<double>(x)), row + x % kTileSize);
+      const auto compute = [&]<int kRamp, int kWhole>() {
+        std::int32_t computed_to = 0;  // groups below this are computed (aligned)
+        for (int e = 0; e < 3; ++e) {
+          std::int32_t x = first[e] - first[e] % kLanes;
+          x = x > computed_to ? x : computed_to;
+          for (; x < end[e]; x += kLanes) {
+            AreaTile& tile = row_tiles[static_cast<std::size_t>(x / kTileSize)];
+            const Doubles area = row_areas<kRamp, kWhole>(
+                row_edges, Doubles(static_cast<double>(x)) + lane_columns, box_begin, box_end);
+            const int at = r * kTileSize + x % kTileSize;
+            store_as_floats(area, tile.area + at);
+            tile.mask = (tile.mask & ~(kGroupBits << at)) |
+                        (std::uint64_t{positive_lanes(area)} << at);
+          }
+          computed_to = x > computed_to ? x : computed_to;
         }
-        computed_to = x > computed_to ? x : computed_to;
+      };
+      switch (ramps * 4 + wholes) {
+        case 0 * 4 + 1: compute.template operator()<0, 1>(); break;
+        case 0 * 4 + 2: compute.template operator()<0, 2>(); break;
+        case 0 * 4 + 3: compute.template operator()<0, 3>(); break;
+        case 1 * 4 + 0: compute.template operator()<1, 0>(); break;
+        case 1 * 4 + 1: compute.template operator()<1, 1>(); break;
+        case 1 * 4 + 2: compute.template operator()<1, 2>(); break;
+        case 2 * 4 + 0: compute.template operator()<2, 0>(); break;
+        case 2 * 4 + 1: compute.template operator()<2, 1>(); break;
+        case 3 * 4 + 0: compute.template operator()<3, 0>(); break;
+        default: compute.template operator()<0, 0>(); break;
       }
     }
-    // Masks from the areas, over the rows of the box.
     for (AreaTile& tile : row_tiles) {
-      std::uint64_t mask = 0;
-      for (int r = r_begin; r < r_end; ++r) {
-        for (int k = 0; k < kTileSize; k += kFloatLanes) {
-          const Floats area = Floats::load_unaligned(tile.area + r * kTileSize + k);
-          mask |= std::uint64_t{bits_of_lanes<Arch>(area > Floats(0.0f))} << (r * kTileSize + k);
-        }
-      }
-      tile.mask = mask;
-      if (mask != 0) emit(tile);
+      if (tile.tile_y != kUntouched && tile.mask != 0) emit(tile);
     }
   }
 }
