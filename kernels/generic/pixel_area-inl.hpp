@@ -291,11 +291,108 @@ inline xsimd::batch<double, Arch> row_areas(const RowEdges<Arch>& edges,
   return xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
 }
 
+// A box at most this many groups of lanes wide is computed whole (walk_box): for small
+// triangles, that costs less than finding the candidates of each row.
+inline constexpr std::int32_t kBoxWalkMaxGroups = 6;
+
+// Every pixel of the box by the lanes, a tile row at a time: tiles as walk_areas().
+template <class Arch, class Emit>
+void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
+              std::uint32_t triangle, Emit&& emit) {
+  using Wide = WideArch<Arch>;
+  using Doubles = xsimd::batch<double, Wide>;
+  using Floats = xsimd::batch<float, Arch>;
+  constexpr std::int32_t kLanes = static_cast<std::int32_t>(Doubles::size);
+  constexpr int kFloatLanes = static_cast<int>(Floats::size);
+  const std::int32_t first_tile_x = box.x0 / kTileSize;
+  const std::int32_t origin = first_tile_x * kTileSize;
+  const std::int32_t x_begin = box.x0 - origin, x_end = box.x1 - origin;
+  const std::int32_t columns = (box.x1 - 1) / kTileSize - first_tile_x + 1;
+  AreaEdge edges[3];
+  set_up_area_edges(tri, origin, edges);
+  row_tiles.resize(static_cast<std::size_t>(columns));
+  alignas(64) double lane_offsets[kLanes];
+  for (int l = 0; l < kLanes; ++l)
+    lane_offsets[l] = static_cast<double>(l);
+  const Doubles lane_columns = Doubles::load_aligned(lane_offsets);
+  const Doubles box_begin(static_cast<double>(x_begin)), box_end(static_cast<double>(x_end));
+  // The edges by kind, once for the triangle: sloped ones have a ramp in every row (the
+  // formula holds for any row, reached or not); horizontal ones add their clamped height
+  // times (hi - lo); vertical ones add nothing.
+  int ramp_edges[3], whole_edges[3], ramps = 0, wholes = 0;
+  RowEdges<Wide> row_edges;
+  for (int e = 0; e < 3; ++e) {
+    const AreaEdge& edge = edges[e];
+    if (edge.horizontal) {
+      row_edges.left[wholes] = Doubles(edge.left);
+      row_edges.right[wholes] = Doubles(edge.right);
+      whole_edges[wholes++] = e;
+    } else if (edge.sign != 0.0) {
+      row_edges.extent[ramps] = Doubles(edge.rising ? edge.right : edge.left);
+      row_edges.upper[ramps] = Doubles(edge.upper_weight);
+      row_edges.ramp[ramps] = Doubles(edge.ramp_weight);
+      ramp_edges[ramps++] = e;
+    }
+  }
+  const std::int32_t group_begin = x_begin - x_begin % kLanes;
+  TileRowBands bands;
+  const auto walk = [&]<int kRamp, int kWhole>() {
+    for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
+      const int r_begin = box.y0 > ty * kTileSize ? box.y0 - ty * kTileSize : 0;
+      const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
+      set_up_bands<Wide>(edges, ty * kTileSize, r_begin, r_end, static_cast<double>(x_end), bands);
+      for (std::int32_t c = 0; c < columns; ++c) {
+        AreaTile& tile = row_tiles[static_cast<std::size_t>(c)];
+        tile.triangle = triangle;
+        tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
+        tile.tile_y = static_cast<std::uint16_t>(ty);
+        tile.mask = 0;
+        for (int k = 0; k < kTileSize * kTileSize; k += kFloatLanes)
+          Floats(0.0f).store_unaligned(tile.area + k);
+      }
+      for (int r = r_begin; r < r_end; ++r) {
+        for (int i = 0; i < kRamp; ++i) {
+          const int e = ramp_edges[i];
+          row_edges.start[i] = Doubles(bands.start[e][r]);
+          row_edges.end[i] = Doubles(bands.end[e][r]);
+          row_edges.twice_start[i] = Doubles(bands.twice_start[e][r]);
+        }
+        for (int i = 0; i < kWhole; ++i)
+          row_edges.whole[i] = Doubles(bands.whole[whole_edges[i]][r]);
+        for (std::int32_t x = group_begin; x < x_end; x += kLanes) {
+          AreaTile& tile = row_tiles[static_cast<std::size_t>(x / kTileSize)];
+          const Doubles area = row_areas<kRamp, kWhole>(
+              row_edges, Doubles(static_cast<double>(x)) + lane_columns, box_begin, box_end);
+          const int at = r * kTileSize + x % kTileSize;
+          store_as_floats(area, tile.area + at);
+          tile.mask |= std::uint64_t{positive_lanes(area)} << at;
+        }
+      }
+      for (const AreaTile& tile : row_tiles) {
+        if (tile.mask != 0) emit(tile);
+      }
+    }
+  };
+  // A triangle has at most one horizontal edge.
+  switch (ramps * 4 + wholes) {
+    case 3 * 4 + 0: walk.template operator()<3, 0>(); break;
+    case 2 * 4 + 1: walk.template operator()<2, 1>(); break;
+    case 2 * 4 + 0: walk.template operator()<2, 0>(); break;
+    case 1 * 4 + 1: walk.template operator()<1, 1>(); break;
+    default: walk.template operator()<0, 0>(); break;
+  }
+}
+
 // Walks a triangle's box a tile row at a time and hands its tiles to `emit` (AreaTile&) in row
 // order. `row_tiles` is the caller's storage, reused from triangle to triangle.
 template <class Arch, class Emit>
 void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
                 std::uint32_t triangle, Emit&& emit) {
+  constexpr std::int32_t kGroupWidth = static_cast<std::int32_t>(xsimd::batch<double, WideArch<Arch>>::size);
+  if ((box.x1 - 1) / kGroupWidth - box.x0 / kGroupWidth < kBoxWalkMaxGroups) {
+    walk_box<Arch>(tri, box, row_tiles, triangle, emit);
+    return;
+  }
   using Wide = WideArch<Arch>;
   using Doubles = xsimd::batch<double, Wide>;
   using Floats = xsimd::batch<float, Arch>;
