@@ -335,12 +335,16 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
     }
   }
   const std::int32_t group_begin = x_begin - x_begin % kLanes;
-  TileRowBands bands;
+  // The crossings of each ramp edge's line with the top of the current row.
+  double top_crossing[3];
+  for (int i = 0; i < ramps; ++i) {
+    const AreaEdge& edge = edges[ramp_edges[i]];
+    top_crossing[i] = edge.x0 + (static_cast<double>(box.y0) - edge.y0) * edge.inverse_slope;
+  }
   const auto walk = [&]<int kRamp, int kWhole>() {
     for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
       const int r_begin = box.y0 > ty * kTileSize ? box.y0 - ty * kTileSize : 0;
       const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
-      set_up_bands<Wide>(edges, ty * kTileSize, r_begin, r_end, static_cast<double>(x_end), bands);
       for (std::int32_t c = 0; c < columns; ++c) {
         AreaTile& tile = row_tiles[static_cast<std::size_t>(c)];
         tile.triangle = triangle;
@@ -351,14 +355,26 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           Floats(0.0f).store_unaligned(tile.area + k);
       }
       for (int r = r_begin; r < r_end; ++r) {
+        // The row's ramps (as set_up_bands() finds them) and horizontal edges' heights.
+        const double y = static_cast<double>(ty * kTileSize + r);
         for (int i = 0; i < kRamp; ++i) {
-          const int e = ramp_edges[i];
-          row_edges.start[i] = Doubles(bands.start[e][r]);
-          row_edges.end[i] = Doubles(bands.end[e][r]);
-          row_edges.twice_start[i] = Doubles(bands.twice_start[e][r]);
+          const AreaEdge& edge = edges[ramp_edges[i]];
+          const double top = top_crossing[i];
+          const double bottom = edge.x0 + (y + 1.0 - edge.y0) * edge.inverse_slope;
+          top_crossing[i] = bottom;
+          const double start = edge.rising ? top : bottom, end = edge.rising ? bottom : top;
+          const double clamped_start = start < edge.left ? edge.left : start;
+          const double clamped_end = end < edge.left ? edge.left : end;
+          row_edges.start[i] = Doubles(clamped_start > edge.right ? edge.right : clamped_start);
+          row_edges.end[i] = Doubles(clamped_end > edge.right ? edge.right : clamped_end);
+          row_edges.twice_start[i] = Doubles(start + start);
         }
-        for (int i = 0; i < kWhole; ++i)
-          row_edges.whole[i] = Doubles(bands.whole[whole_edges[i]][r]);
+        for (int i = 0; i < kWhole; ++i) {
+          const AreaEdge& edge = edges[whole_edges[i]];
+          const double height = edge.y0 - y;
+          row_edges.whole[i] =
+              Doubles(edge.sign * (height < 0.0 ? 0.0 : (height > 1.0 ? 1.0 : height)));
+        }
         for (std::int32_t x = group_begin; x < x_end; x += kLanes) {
           AreaTile& tile = row_tiles[static_cast<std::size_t>(x / kTileSize)];
           const Doubles area = row_areas<kRamp, kWhole>(
