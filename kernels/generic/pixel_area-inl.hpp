@@ -133,12 +133,12 @@ inline std::uint32_t positive_lanes(xsimd::batch<double, Arch> v) {
 // One edge of a triangle, in pixels, x from the walk's origin (the left side of the box's first
 // tile).
 struct AreaEdge {
-  double left, right;          // x extent (exact)
-  double x0, y0;               // P, its x from the origin and its y (exact)
-  double inverse_slope;        // dx / dy; 0 for a horizontal edge
-  double y_low, y_high;        // y extent (exact)
-  double no_ramp;              // kNoRamp for a horizontal edge, else 0
-  bool horizontal, rising;     // dy = 0; y grows with x
+  double left, right;       // x extent (exact)
+  double x0, y0;            // P, its x from the origin and its y (exact)
+  double inverse_slope;     // dx / dy; 0 for a horizontal edge
+  double y_low, y_high;     // y extent (exact)
+  double no_ramp;           // kNoRamp for a horizontal edge, else 0
+  bool horizontal, rising;  // dy = 0; y grows with x
   // The signed weights of (hi - lo), (hi - b) and (b - a) ((a + b) - 2 A) in the area.
   double whole_weight, upper_weight, ramp_weight;
   double sign;  // of dx, times the winding
@@ -199,8 +199,8 @@ struct TileRowBands {
 
 // Fills `bands` for rows top_row + r_begin .. top_row + r_end - 1, kLanes rows at a time.
 template <class Arch>
-void set_up_bands(const AreaEdge* edges, std::int32_t top_row, int r_begin, int r_end,
-                  double width, TileRowBands& bands) {
+void set_up_bands(const AreaEdge* edges, std::int32_t top_row, int r_begin, int r_end, double width,
+                  TileRowBands& bands) {
   using Doubles = xsimd::batch<double, Arch>;
   constexpr int kLanes = static_cast<int>(Doubles::size);
   alignas(64) double offsets[kLanes];
@@ -214,10 +214,10 @@ void set_up_bands(const AreaEdge* edges, std::int32_t top_row, int r_begin, int 
     for (int k = r_begin - r_begin % kLanes; k < r_end; k += kLanes) {
       const Doubles top_y = Doubles(static_cast<double>(top_row + k)) + lane_rows;
       const Doubles bottom_y = top_y + one;
-      const Doubles top = xsimd::fma(top_y - Doubles(edge.y0), Doubles(edge.inverse_slope),
-                                     Doubles(edge.x0));
-      const Doubles bottom = xsimd::fma(bottom_y - Doubles(edge.y0), Doubles(edge.inverse_slope),
-                                        Doubles(edge.x0));
+      const Doubles top =
+          xsimd::fma(top_y - Doubles(edge.y0), Doubles(edge.inverse_slope), Doubles(edge.x0));
+      const Doubles bottom =
+          xsimd::fma(bottom_y - Doubles(edge.y0), Doubles(edge.inverse_slope), Doubles(edge.x0));
       const Doubles ramp_start = (edge.rising ? top : bottom) + no_ramp;
       const Doubles ramp_end = (edge.rising ? bottom : top) + no_ramp;
       xsimd::min(xsimd::max(ramp_start, left), right).store_aligned(&bands.start[e][k]);
@@ -391,11 +391,21 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
   };
   // A triangle has at most one horizontal edge.
   switch (ramps * 4 + wholes) {
-    case 3 * 4 + 0: walk.template operator()<3, 0>(); break;
-    case 2 * 4 + 1: walk.template operator()<2, 1>(); break;
-    case 2 * 4 + 0: walk.template operator()<2, 0>(); break;
-    case 1 * 4 + 1: walk.template operator()<1, 1>(); break;
-    default: walk.template operator()<0, 0>(); break;
+    case 3 * 4 + 0:
+      walk.template operator()<3, 0>();
+      break;
+    case 2 * 4 + 1:
+      walk.template operator()<2, 1>();
+      break;
+    case 2 * 4 + 0:
+      walk.template operator()<2, 0>();
+      break;
+    case 1 * 4 + 1:
+      walk.template operator()<1, 1>();
+      break;
+    default:
+      walk.template operator()<0, 0>();
+      break;
   }
 }
 
@@ -404,7 +414,8 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
 template <class Arch, class Emit>
 void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
                 std::uint32_t triangle, Emit&& emit) {
-  constexpr std::int32_t kGroupWidth = static_cast<std::int32_t>(xsimd::batch<double, WideArch<Arch>>::size);
+  constexpr std::int32_t kGroupWidth =
+      static_cast<std::int32_t>(xsimd::batch<double, WideArch<Arch>>::size);
   if ((box.x1 - 1) / kGroupWidth - box.x0 / kGroupWidth < kBoxWalkMaxGroups) {
     walk_box<Arch>(tri, box, row_tiles, triangle, emit);
     return;
@@ -466,8 +477,8 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
             Floats(0.0f).store_unaligned(tile.area + k);
         }
         const std::int32_t from = span_first - c * kTileSize, to = span_end - c * kTileSize;
-        const std::uint32_t whole = (0xFFu >> (to < kTileSize ? kTileSize - to : 0)) &
-                                    (0xFFu << (from > 0 ? from : 0));
+        const std::uint32_t whole =
+            (0xFFu >> (to < kTileSize ? kTileSize - to : 0)) & (0xFFu << (from > 0 ? from : 0));
         for (int k = 0; k < kTileSize; k += kFloatLanes) {
           xsimd::select(lanes_of_bits<Arch>(whole >> k), Floats(1.0f), Floats(0.0f))
               .store_unaligned(tile.area + r * kTileSize + k);
@@ -514,23 +525,43 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
                 row_edges, Doubles(static_cast<double>(x)) + lane_columns, box_begin, box_end);
             const int at = r * kTileSize + x % kTileSize;
             store_as_floats(area, tile.area + at);
-            tile.mask = (tile.mask & ~(kGroupBits << at)) |
-                        (std::uint64_t{positive_lanes(area)} << at);
+            tile.mask =
+                (tile.mask & ~(kGroupBits << at)) | (std::uint64_t{positive_lanes(area)} << at);
           }
           computed_to = x > computed_to ? x : computed_to;
         }
       };
       switch (ramps * 4 + wholes) {
-        case 0 * 4 + 1: compute.template operator()<0, 1>(); break;
-        case 0 * 4 + 2: compute.template operator()<0, 2>(); break;
-        case 0 * 4 + 3: compute.template operator()<0, 3>(); break;
-        case 1 * 4 + 0: compute.template operator()<1, 0>(); break;
-        case 1 * 4 + 1: compute.template operator()<1, 1>(); break;
-        case 1 * 4 + 2: compute.template operator()<1, 2>(); break;
-        case 2 * 4 + 0: compute.template operator()<2, 0>(); break;
-        case 2 * 4 + 1: compute.template operator()<2, 1>(); break;
-        case 3 * 4 + 0: compute.template operator()<3, 0>(); break;
-        default: compute.template operator()<0, 0>(); break;
+        case 0 * 4 + 1:
+          compute.template operator()<0, 1>();
+          break;
+        case 0 * 4 + 2:
+          compute.template operator()<0, 2>();
+          break;
+        case 0 * 4 + 3:
+          compute.template operator()<0, 3>();
+          break;
+        case 1 * 4 + 0:
+          compute.template operator()<1, 0>();
+          break;
+        case 1 * 4 + 1:
+          compute.template operator()<1, 1>();
+          break;
+        case 1 * 4 + 2:
+          compute.template operator()<1, 2>();
+          break;
+        case 2 * 4 + 0:
+          compute.template operator()<2, 0>();
+          break;
+        case 2 * 4 + 1:
+          compute.template operator()<2, 1>();
+          break;
+        case 3 * 4 + 0:
+          compute.template operator()<3, 0>();
+          break;
+        default:
+          compute.template operator()<0, 0>();
+          break;
       }
     }
     for (AreaTile& tile : row_tiles) {
