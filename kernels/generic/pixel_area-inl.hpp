@@ -1,41 +1,53 @@
 // Exact-area coverage (edgewise/pixel_area.hpp): the area of each pixel's square inside a
-// snapped triangle, computed only where the triangle's boundary passes.
+// snapped triangle.
 //
-// Per pixel row (a band one pixel high), each edge's piece inside the band spans a range of
-// pixels: those are the candidates. Between the leftmost and the rightmost candidate, a pixel
-// that no piece touches lies wholly inside (the triangle's section of the band is convex and
-// reaches both sides of it), so its area is 1 without arithmetic. Candidates are computed as
-// aligned groups of consecutive pixels, one per double lane, by signed area accumulation: in
-// the row's frame (y down from the band's top, in pixels) every edge P -> Q adds, for the pixel
-// column [u, u + 1],
+// Signed area accumulation, kLanes consecutive pixels of a row at a time (one per double lane,
+// the group aligned so that it never straddles a tile): in the row's frame (a band one pixel
+// high, y down from its top, in pixels) every edge P -> Q adds, for the pixel column [u, u + 1],
 //     I = integral over x in [lo, hi] of clamp(y(x), 0, 1) dx,
-// lo and hi being the edge's x extent clamped to the column, with the sign of Q_x - P_x; the
-// bottom edges minus the top edges give the covered length of each column of the square, so
-// |sum of I| is the area (the winding gives the sign).
+// lo and hi being the edge's x extent [L, H] clamped to the column, with the sign of Q_x - P_x;
+// the bottom edges minus the top edges give the covered length of each column of the square,
+// so |sum of I| is the area (the winding gives the sign, folded into each edge's weights).
 //
 // No division per pixel: where y rises with x, clamp(y) is 0 left of A (the x where the edge's
 // line crosses the band's top), 1 right of B (where it crosses the bottom), and (x - A) s in
-// between, s = dy / dx. With a and b, A and B clamped to [lo, hi],
+// between, s = dy / dx. With a and b, A and B clamped to [lo, hi] (that is, clamped to [L, H]
+// once per row, then to the column),
 //     I = (hi - b) + (b - a) ((a + b) - 2 A) s / 2.
 // Where y falls with x, the same holds for 1 - y, whose A and B are the crossings of the bottom
-// and the top: I = (hi - lo) - I'. A horizontal edge adds clamp(y) (hi - lo). A and B are found
-// once per band per edge (A = P_x + (band's y - P_y) dx / dy), so a lane does 16 operations
-// per edge: minima, maxima, differences and three multiply-adds.
+// and the top: I = (hi - lo) - I' = (b - lo) - ramp. So an edge costs a lane 13 operations
+// (three clamps of two operations, three differences, a sum, a product, two multiply-adds), with A,
+// B and s / 2 found once per row (A = P_x + (row's y - P_y) dx / dy) or per triangle. The formula
+// holds in every row; where an edge does not reach the row's band it reduces to (hi - lo) (the edge
+// lies below) or 0 (above), exactly, which a row of candidates takes as such. A horizontal edge
+// adds clamp(y) (hi - lo); a vertical one nothing.
 //
-// Error (the tolerance of pixel_area.hpp), in pixels, x measured from the clipped box's left
-// side (|x| < 2^16 where it matters), eps = 2^-53:
-// - u, the edge's extent and so lo and hi are exact (multiples of 1/256 below 2^17); hi - lo
-//   and hi - b are exact or within one rounding of a number below 1 (both lie in [u, u + 1]).
+// Which pixels: a box at most kBoxWalkMaxGroups groups wide is computed whole (walk_box). In a
+// wider one, per row each edge's piece inside the band spans a range of pixels: the candidates,
+// computed by groups. Between the leftmost and the rightmost candidate, a pixel that no piece
+// touches lies wholly inside (the triangle's section of the band is convex and reaches both
+// sides of it): its area is 1 without arithmetic. Masks are kept as the areas are stored.
+//
+// Error (the tolerance of pixel_area.hpp), in pixels, x measured from the left side of the
+// box's first tile (0 <= u < 2^15 + 8), eps = 2^-53:
+// - u, L, H, P and so lo, hi and the clamps X of L or H are exact (multiples of 1/256 below
+//   2^17); y - P_y is exact. X - b and b - a are exact (two numbers of [u, u + 1], u >= 1) or
+//   within eps of it (u = 0).
 // - A (and B) matters only where it falls inside [lo, hi], hence inside the edge's extent: then
-//   |A - P_x| <= |dx| < 2^16 and the product and sum that give A err by at most 2^-35.
-//   Elsewhere only its side of [lo, hi] matters, which such an error cannot change. So a and b
-//   err by at most 2^-35, and I depends on each of hi, b, a with a slope of at most 1.
-// - The ramp term: where b > a, a and b lie within 2^-35 of [A, B], whose width is 1 / |s|, so
-//   (b - a) |s| <= 1 + 2^-34 |s| and ((a + b) - 2 A) rounds by at most 3 eps (|a + b| + 2 |A|):
-//   the term errs by at most 2^-33 (from a, b and A) plus a few eps.
-// Per edge below 2^-31, three edges and the sum below 2^-29; areas below 2^-30 are reported as
-// 0 (they are round-off where no edge reaches, or a true sliver below 2^-30); the rounding to
-// float adds 2^-25. In all below 2^-24 px^2 < 1e-6.
+//   |A - P_x| <= |dx| < 2^16, and dx / dy, its product (or the fused multiply-add) and the sum
+//   err by at most 2^-35.5 in all. Elsewhere only its side of [lo, hi] matters, which such an
+//   error cannot change; and where A lies far outside but the ramp still reaches the column
+//   (b > a), |A - P_x| <= |dx| + 1 / |s| and its error times |s| (b - a) <= 1 + 2^-10 below stays
+//   under 2^-35.
+// - The edge's sum is f(a, b, A) = (X - b) + (b - a) ((a + b) - 2 A) s / 2 (signed), with
+//   |df/db| = |2 (b - A) s / 2 - 1| <= 1, |df/da| = |(a - A) s| <= 1 and |df/dA| = |(b - a) s| <=
+//   1 + 2^-10 (b - a exceeds the ramp's width 1 / |s| by at most twice the error of A, B, and
+//   |s| < 2^24): at most 3.01 * 2^-35.5 from a, b and A; the roundings of (a + b) (2^-37 times
+//   |(b - a) s / 2| <= 1) and of the rest (a few eps) add below 2^-36.
+// Per edge below 2^-33.6, three edges and their sum below 2^-32; areas at most 2^-30 are
+// reported as 0 (round-off where the triangle does not reach, or a true sliver that small,
+// which the tolerance allows); the rounding to float adds 2^-25. In all below 2^-24.9 px^2 <
+// 1e-6.
 #pragma once
 
 #include <cmath>
@@ -139,13 +151,13 @@ struct AreaEdge {
   double y_low, y_high;     // y extent (exact)
   double no_ramp;           // kNoRamp for a horizontal edge, else 0
   bool horizontal, rising;  // dy = 0; y grows with x
-  // The signed weights of (hi - lo), (hi - b) and (b - a) ((a + b) - 2 A) in the area.
-  double whole_weight, upper_weight, ramp_weight;
+  // The signed weights of (X - b) and (b - a) ((a + b) - 2 A) in the area (RowEdges).
+  double upper_weight, ramp_weight;
   double sign;  // of dx, times the winding
 };
 
-// Where a horizontal edge's ramp lies: beyond every pixel, so that a = b = hi; and its pixel
-// range, widened to the whole of its extent.
+// Added to a horizontal edge's crossings (which it has none of): its ramp lies beyond every
+// pixel, and its piece in a band spans its whole extent.
 inline constexpr double kNoRamp = 0x1p60;
 
 // The triangle's edges from its vertices, x measured from origin_x (pixels).
@@ -171,14 +183,13 @@ inline void set_up_area_edges(const AreaTriangle& tri, std::int32_t origin_x, Ar
         dx == 0 || dy == 0 ? 0.0
                            : std::fabs(static_cast<double>(dy) / static_cast<double>(dx)) / 2.0;
     const double orient = edge.horizontal || edge.rising ? 1.0 : -1.0;  // I or (hi - lo) - I'
-    edge.whole_weight = edge.horizontal || edge.rising ? 0.0 : edge.sign;
     edge.upper_weight = edge.horizontal ? 0.0 : orient * edge.sign;
     edge.ramp_weight = orient * edge.sign * half_slope;
   }
 }
 
 // Pixel ranges are widened by this (pixels) each way: far more than the crossings' error
-// (2^-35), so a pixel a piece touches is never left out; a pixel it only grazes gets its area
+// (2^-35.5), so a pixel a piece touches is never left out; a pixel it only grazes gets its area
 // computed, which is exact too.
 inline constexpr double kRangeMargin = 1.0 / 256.0;
 
