@@ -44,10 +44,10 @@
 //   1 + 2^-10 (b - a exceeds the ramp's width 1 / |s| by at most twice the error of A, B, and
 //   |s| < 2^24): at most 3.01 * 2^-35.5 from a, b and A; the roundings of (a + b) (2^-37 times
 //   |(b - a) s / 2| <= 1) and of the rest (a few eps) add below 2^-36.
-// Per edge below 2^-33.6, three edges and their sum below 2^-32; areas at most 2^-30 are
-// reported as 0 (round-off where the triangle does not reach, or a true sliver that small,
-// which the tolerance allows); the rounding to float adds 2^-25. In all below 2^-24.9 px^2 <
-// 1e-6.
+// Per edge below 2^-33.6, three edges and their sum below 2^-32; areas at most 2^-32
+// (kAreaRoundOff) are reported as 0, which removes all round-off where the triangle does not
+// reach and misses a true sliver that small by at most as much; the rounding to float adds
+// 2^-25. In all below 2^-24.9 px^2 < 1e-6.
 #pragma once
 
 #include <cmath>
@@ -80,8 +80,9 @@ struct AreaTriangle {
   double orientation;  // -1 where twice the signed area is positive (clockwise), else 1
 };
 
-// Areas below this are round-off where no edge reaches (or a sliver of no consequence): 0.
-inline constexpr double kAreaRoundOff = 0x1p-30;
+// Areas up to this are reported as 0: it bounds the round-off where the triangle does not reach
+// (the error analysis above); a true sliver that small is within the tolerance of 0.
+inline constexpr double kAreaRoundOff = 0x1p-32;
 
 // The lanes of `v` rounded to float and stored at out[0 .. lanes).
 template <class Arch>
