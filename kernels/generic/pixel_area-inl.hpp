@@ -143,6 +143,37 @@ inline std::uint32_t positive_lanes(xsimd::batch<double, Arch> v) {
   }
 }
 
+// Lanes 1 .. n - 1 of `v` followed by lane 0 of `next`: the values one lane further on.
+template <class Arch>
+inline xsimd::batch<double, Arch> next_lanes(xsimd::batch<double, Arch> v,
+                                             xsimd::batch<double, Arch> next) {
+#if defined(__AVX512F__)
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    return _mm512_castsi512_pd(
+        _mm512_alignr_epi64(_mm512_castpd_si512(next), _mm512_castpd_si512(v), 1));
+  } else
+#endif
+#if defined(__AVX2__)
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    // (v2, v3, next0, next1), then v1, v2 from v and its halves' odd lanes.
+    return _mm256_shuffle_pd(v, _mm256_permute2f128_pd(v, next, 0x21), 0x5);
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    return _mm_shuffle_pd(v, next, 1);
+  } else
+#endif
+#if defined(__aarch64__)
+      if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
+    return vextq_f64(v, next, 1);
+  } else
+#endif
+  {
+    static_assert(!sizeof(Arch), "next_lanes: no implementation for this architecture");
+  }
+}
+
 // One edge of a triangle, in pixels, x from the walk's origin (the left side of the box's first
 // tile).
 struct AreaEdge {
@@ -307,7 +338,43 @@ inline xsimd::batch<double, Arch> row_areas(const RowEdges<Arch>& edges,
 // triangles, that costs less than finding the candidates of each row.
 inline constexpr std::int32_t kBoxWalkMaxGroups = 6;
 
-// Every pixel of the box by the lanes, a tile row at a time: tiles as walk_areas().
+// One row's edges as the box walk uses them (walk_box): sloped ones, then a horizontal one.
+template <class Arch>
+struct BoxRowEdges {
+  using Doubles = xsimd::batch<double, Arch>;
+  // The edge adds weight clamp(x, from, to) + ramp (p - A') (p + offset), p = clamp(x, A', B').
+  Doubles start[3], end[3], offset[3], from[3], to[3], weight[3], ramp[3];
+  Doubles left, right, whole;  // a horizontal edge adds whole clamp(x, left, right)
+};
+
+// The integral of the row's covered height from the box's left to x, summed over the edges,
+// up to a constant of the row: a pixel's area is its value at the pixel's right side minus its
+// value at the left side.
+template <int kRamp, int kWhole, class Arch>
+inline xsimd::batch<double, Arch> covered_up_to(const BoxRowEdges<Arch>& edges,
+                                                xsimd::batch<double, Arch> x) {
+  using Doubles = xsimd::batch<double, Arch>;
+  Doubles sum(0.0);
+  for (int e = 0; e < kRamp; ++e) {
+    const Doubles p = xsimd::min(xsimd::max(x, edges.start[e]), edges.end[e]);
+    const Doubles flat = xsimd::min(xsimd::max(x, edges.from[e]), edges.to[e]);
+    sum = xsimd::fma(edges.weight[e], flat, sum);
+    sum = xsimd::fma(edges.ramp[e], (p - edges.start[e]) * (p + edges.offset[e]), sum);
+  }
+  if constexpr (kWhole > 0)
+    sum = xsimd::fma(edges.whole, xsimd::min(xsimd::max(x, edges.left), edges.right), sum);
+  return sum;
+}
+
+// Every pixel of the box by the lanes, a tile row at a time: tiles as walk_areas(). Along a row
+// the integral of the covered height, F(x) = integral from the box's left to x, is taken at
+// every pixel's left side, one lane per pixel, and a pixel's area is F(u + 1) - F(u): F at the
+// next lane. Where y rises with x, an edge's clamped height is 0 up to A', a ramp (t - A) s up
+// to B' and 1 up to its right end R (A', B': the crossings clamped to the edge's extent
+// [L, R]), so with p = clamp(x, A', B'), up to a constant,
+//     F(x) = clamp(x, B', R) + (p - A') (p + A' - 2 A) s / 2;
+// where it falls, 1 from L to A', a ramp down to 0 at B', so F(x) = clamp(x, L, B') - the same
+// ramp term. Per edge 9 lane operations, and one evaluation per group of pixels.
 template <class Arch, class Emit>
 void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
               std::uint32_t triangle, Emit&& emit) {
@@ -329,19 +396,18 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
   const Doubles lane_columns = Doubles::load_aligned(lane_offsets);
   const Doubles box_begin(static_cast<double>(x_begin)), box_end(static_cast<double>(x_end));
   // The edges by kind, once for the triangle: sloped ones have a ramp in every row (the
-  // formula holds for any row, reached or not); horizontal ones add their clamped height
-  // times (hi - lo); vertical ones add nothing.
-  int ramp_edges[3], whole_edges[3], ramps = 0, wholes = 0;
-  RowEdges<Wide> row_edges;
+  // formula holds for any row, reached or not); a horizontal one adds its clamped height
+  // times its clamped extent; vertical ones add nothing.
+  int ramp_edges[3], ramps = 0, horizontal = -1;
+  BoxRowEdges<Wide> row_edges;
   for (int e = 0; e < 3; ++e) {
     const AreaEdge& edge = edges[e];
     if (edge.horizontal) {
-      row_edges.left[wholes] = Doubles(edge.left);
-      row_edges.right[wholes] = Doubles(edge.right);
-      whole_edges[wholes++] = e;
+      row_edges.left = Doubles(edge.left);
+      row_edges.right = Doubles(edge.right);
+      horizontal = e;
     } else if (edge.sign != 0.0) {
-      row_edges.extent[ramps] = Doubles(edge.rising ? edge.right : edge.left);
-      row_edges.upper[ramps] = Doubles(edge.upper_weight);
+      row_edges.weight[ramps] = Doubles(edge.sign);
       row_edges.ramp[ramps] = Doubles(edge.ramp_weight);
       ramp_edges[ramps++] = e;
     }
@@ -367,7 +433,7 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           Floats(0.0f).store_unaligned(tile.area + k);
       }
       for (int r = r_begin; r < r_end; ++r) {
-        // The row's ramps (as set_up_bands() finds them) and horizontal edges' heights.
+        // The row's ramps (as set_up_bands() finds them) and horizontal edge's height.
         const double y = static_cast<double>(ty * kTileSize + r);
         for (int i = 0; i < kRamp; ++i) {
           const AreaEdge& edge = edges[ramp_edges[i]];
@@ -375,25 +441,38 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           const double bottom = edge.x0 + (y + 1.0 - edge.y0) * edge.inverse_slope;
           top_crossing[i] = bottom;
           const double start = edge.rising ? top : bottom, end = edge.rising ? bottom : top;
-          const double clamped_start = start < edge.left ? edge.left : start;
-          const double clamped_end = end < edge.left ? edge.left : end;
-          row_edges.start[i] = Doubles(clamped_start > edge.right ? edge.right : clamped_start);
-          row_edges.end[i] = Doubles(clamped_end > edge.right ? edge.right : clamped_end);
-          row_edges.twice_start[i] = Doubles(start + start);
+          double clamped_start = start < edge.left ? edge.left : start;
+          clamped_start = clamped_start > edge.right ? edge.right : clamped_start;
+          double clamped_end = end < edge.left ? edge.left : end;
+          clamped_end = clamped_end > edge.right ? edge.right : clamped_end;
+          row_edges.start[i] = Doubles(clamped_start);
+          row_edges.end[i] = Doubles(clamped_end);
+          row_edges.offset[i] = Doubles(clamped_start - (start + start));
+          row_edges.from[i] = Doubles(edge.rising ? clamped_end : edge.left);
+          row_edges.to[i] = Doubles(edge.rising ? edge.right : clamped_end);
         }
-        for (int i = 0; i < kWhole; ++i) {
-          const AreaEdge& edge = edges[whole_edges[i]];
+        if constexpr (kWhole > 0) {
+          const AreaEdge& edge = edges[horizontal];
           const double height = edge.y0 - y;
-          row_edges.whole[i] =
+          row_edges.whole =
               Doubles(edge.sign * (height < 0.0 ? 0.0 : (height > 1.0 ? 1.0 : height)));
         }
+        Doubles u = Doubles(static_cast<double>(group_begin)) + lane_columns;
+        Doubles covered = covered_up_to<kRamp, kWhole>(row_edges, u);
         for (std::int32_t x = group_begin; x < x_end; x += kLanes) {
+          // F at the next group's lanes, where the last pixel needs it.
+          const Doubles u_next = u + Doubles(static_cast<double>(kLanes));
+          const Doubles covered_next =
+              x + kLanes <= x_end ? covered_up_to<kRamp, kWhole>(row_edges, u_next) : covered;
+          const Doubles sum = next_lanes(covered, covered_next) - covered;
+          const auto keep = (sum > Doubles(kAreaRoundOff)) & (u >= box_begin) & (u < box_end);
+          const Doubles area = xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
           AreaTile& tile = row_tiles[static_cast<std::size_t>(x / kTileSize)];
-          const Doubles area = row_areas<kRamp, kWhole>(
-              row_edges, Doubles(static_cast<double>(x)) + lane_columns, box_begin, box_end);
           const int at = r * kTileSize + x % kTileSize;
           store_as_floats(area, tile.area + at);
           tile.mask |= std::uint64_t{positive_lanes(area)} << at;
+          u = u_next;
+          covered = covered_next;
         }
       }
       for (const AreaTile& tile : row_tiles) {
@@ -401,22 +480,19 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
       }
     }
   };
-  // A triangle has at most one horizontal edge.
-  switch (ramps * 4 + wholes) {
-    case 3 * 4 + 0:
+  // A triangle has at most one horizontal edge, and at most one vertical edge.
+  switch (ramps * 2 + (horizontal >= 0 ? 1 : 0)) {
+    case 3 * 2 + 0:
       walk.template operator()<3, 0>();
       break;
-    case 2 * 4 + 1:
+    case 2 * 2 + 1:
       walk.template operator()<2, 1>();
       break;
-    case 2 * 4 + 0:
+    case 2 * 2 + 0:
       walk.template operator()<2, 0>();
       break;
-    case 1 * 4 + 1:
-      walk.template operator()<1, 1>();
-      break;
     default:
-      walk.template operator()<0, 0>();
+      walk.template operator()<1, 1>();
       break;
   }
 }
