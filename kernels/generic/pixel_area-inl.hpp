@@ -366,6 +366,46 @@ inline xsimd::batch<double, Arch> covered_up_to(const BoxRowEdges<Arch>& edges,
   return sum;
 }
 
+// The box walk's per-row constants of its sloped edges, rows r_begin .. r_end - 1 of a tile
+// row, kLanes rows at a time (the ramp [A', B'] as set_up_bands() finds it).
+struct BoxRows {
+  alignas(64) double start[3][kTileSize];
+  alignas(64) double end[3][kTileSize];
+  alignas(64) double offset[3][kTileSize];  // A' - 2 A
+  alignas(64) double from[3][kTileSize];
+  alignas(64) double to[3][kTileSize];
+};
+
+template <class Arch>
+void set_up_box_rows(const AreaEdge* edges, const int* ramp_edges, int ramps, std::int32_t top_row,
+                     int r_begin, int r_end, BoxRows& rows) {
+  using Doubles = xsimd::batch<double, Arch>;
+  constexpr int kLanes = static_cast<int>(Doubles::size);
+  alignas(64) double offsets[kLanes];
+  for (int l = 0; l < kLanes; ++l)
+    offsets[l] = static_cast<double>(l);
+  const Doubles lane_rows = Doubles::load_aligned(offsets);
+  for (int i = 0; i < ramps; ++i) {
+    const AreaEdge& edge = edges[ramp_edges[i]];
+    const Doubles left(edge.left), right(edge.right), x0(edge.x0), y0(edge.y0);
+    const Doubles inverse_slope(edge.inverse_slope);
+    for (int k = r_begin - r_begin % kLanes; k < r_end; k += kLanes) {
+      const Doubles top_y = Doubles(static_cast<double>(top_row + k)) + lane_rows;
+      // As the candidate walk: x0 + (y - y0) dx / dy, y - y0 exact.
+      const Doubles top = x0 + (top_y - y0) * inverse_slope;
+      const Doubles bottom = x0 + ((top_y + Doubles(1.0)) - y0) * inverse_slope;
+      const Doubles start = edge.rising ? top : bottom, end = edge.rising ? bottom : top;
+      const Doubles clamped_start = xsimd::min(xsimd::max(start, left), right);
+      const Doubles clamped_end = xsimd::min(xsimd::max(end, left), right);
+      clamped_start.store_aligned(&rows.start[i][k]);
+      clamped_end.store_aligned(&rows.end[i][k]);
+      (clamped_start - (start + start)).store_aligned(&rows.offset[i][k]);
+      (edge.rising ? clamped_end : left).store_aligned(&rows.from[i][k]);
+      (edge.rising ? right : clamped_end).store_aligned(&rows.to[i][k]);
+    }
+  }
+}
+
 // Every pixel of the box by the lanes, a tile row at a time: tiles as walk_areas(). Along a row
 // the integral of the covered height, F(x) = integral from the box's left to x, is taken at
 // every pixel's left side, one lane per pixel, and a pixel's area is F(u + 1) - F(u): F at the
@@ -413,16 +453,12 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
     }
   }
   const std::int32_t group_begin = x_begin - x_begin % kLanes;
-  // The crossings of each ramp edge's line with the top of the current row.
-  double top_crossing[3];
-  for (int i = 0; i < ramps; ++i) {
-    const AreaEdge& edge = edges[ramp_edges[i]];
-    top_crossing[i] = edge.x0 + (static_cast<double>(box.y0) - edge.y0) * edge.inverse_slope;
-  }
+  BoxRows rows;
   const auto walk = [&]<int kRamp, int kWhole>() {
     for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
       const int r_begin = box.y0 > ty * kTileSize ? box.y0 - ty * kTileSize : 0;
       const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
+      set_up_box_rows<Wide>(edges, ramp_edges, kRamp, ty * kTileSize, r_begin, r_end, rows);
       for (std::int32_t c = 0; c < columns; ++c) {
         AreaTile& tile = row_tiles[static_cast<std::size_t>(c)];
         tile.triangle = triangle;
@@ -433,23 +469,13 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           Floats(0.0f).store_unaligned(tile.area + k);
       }
       for (int r = r_begin; r < r_end; ++r) {
-        // The row's ramps (as set_up_bands() finds them) and horizontal edge's height.
         const double y = static_cast<double>(ty * kTileSize + r);
         for (int i = 0; i < kRamp; ++i) {
-          const AreaEdge& edge = edges[ramp_edges[i]];
-          const double top = top_crossing[i];
-          const double bottom = edge.x0 + (y + 1.0 - edge.y0) * edge.inverse_slope;
-          top_crossing[i] = bottom;
-          const double start = edge.rising ? top : bottom, end = edge.rising ? bottom : top;
-          double clamped_start = start < edge.left ? edge.left : start;
-          clamped_start = clamped_start > edge.right ? edge.right : clamped_start;
-          double clamped_end = end < edge.left ? edge.left : end;
-          clamped_end = clamped_end > edge.right ? edge.right : clamped_end;
-          row_edges.start[i] = Doubles(clamped_start);
-          row_edges.end[i] = Doubles(clamped_end);
-          row_edges.offset[i] = Doubles(clamped_start - (start + start));
-          row_edges.from[i] = Doubles(edge.rising ? clamped_end : edge.left);
-          row_edges.to[i] = Doubles(edge.rising ? edge.right : clamped_end);
+          row_edges.start[i] = Doubles(rows.start[i][r]);
+          row_edges.end[i] = Doubles(rows.end[i][r]);
+          row_edges.offset[i] = Doubles(rows.offset[i][r]);
+          row_edges.from[i] = Doubles(rows.from[i][r]);
+          row_edges.to[i] = Doubles(rows.to[i][r]);
         }
         if constexpr (kWhole > 0) {
           const AreaEdge& edge = edges[horizontal];
@@ -467,8 +493,10 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           const Doubles sum = next_lanes(covered, covered_next) - covered;
           const auto keep = (sum > Doubles(kAreaRoundOff)) & (u >= box_begin) & (u < box_end);
           const Doubles area = xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
-          AreaTile& tile = row_tiles[static_cast<std::size_t>(x / kTileSize)];
-          const int at = r * kTileSize + x % kTileSize;
+          // x >= 0: the tile and the column by shifts.
+          const auto column = static_cast<std::uint32_t>(x);
+          AreaTile& tile = row_tiles[column / kTileSize];
+          const std::uint32_t at = static_cast<std::uint32_t>(r) * kTileSize + column % kTileSize;
           store_as_floats(area, tile.area + at);
           tile.mask |= std::uint64_t{positive_lanes(area)} << at;
           u = u_next;
