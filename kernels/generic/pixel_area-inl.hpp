@@ -593,11 +593,18 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
             Floats(0.0f).store_unaligned(tile.area + k);
         }
         const std::int32_t from = span_first - c * kTileSize, to = span_end - c * kTileSize;
+        float* row = tile.area + r * kTileSize;
+        if (from <= 0 && to >= kTileSize) {
+          for (int k = 0; k < kTileSize; k += kFloatLanes)
+            Floats(1.0f).store_unaligned(row + k);
+          tile.mask |= std::uint64_t{0xFF} << (r * kTileSize);
+          continue;
+        }
         const std::uint32_t whole =
             (0xFFu >> (to < kTileSize ? kTileSize - to : 0)) & (0xFFu << (from > 0 ? from : 0));
         for (int k = 0; k < kTileSize; k += kFloatLanes) {
           xsimd::select(lanes_of_bits<Arch>(whole >> k), Floats(1.0f), Floats(0.0f))
-              .store_unaligned(tile.area + r * kTileSize + k);
+              .store_unaligned(row + k);
         }
         tile.mask |= std::uint64_t{whole} << (r * kTileSize);
       }
@@ -636,10 +643,12 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
           std::int32_t x = first[e] - first[e] % kLanes;
           x = x > computed_to ? x : computed_to;
           for (; x < end[e]; x += kLanes) {
-            AreaTile& tile = row_tiles[static_cast<std::size_t>(x / kTileSize)];
+            // x >= 0: the tile and the column by shifts.
+            const auto column = static_cast<std::uint32_t>(x);
+            AreaTile& tile = row_tiles[column / kTileSize];
             const Doubles area = row_areas<kRamp, kWhole>(
                 row_edges, Doubles(static_cast<double>(x)) + lane_columns, box_begin, box_end);
-            const int at = r * kTileSize + x % kTileSize;
+            const std::uint32_t at = static_cast<std::uint32_t>(r) * kTileSize + column % kTileSize;
             store_as_floats(area, tile.area + at);
             tile.mask =
                 (tile.mask & ~(kGroupBits << at)) | (std::uint64_t{positive_lanes(area)} << at);
