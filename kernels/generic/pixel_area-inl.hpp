@@ -22,11 +22,14 @@
 // lies below) or 0 (above), exactly, which a row of candidates takes as such. A horizontal edge
 // adds clamp(y) (hi - lo); a vertical one nothing.
 //
-// Which pixels: a box at most kBoxWalkMaxGroups groups wide is computed whole (walk_box). In a
-// wider one, per row each edge's piece inside the band spans a range of pixels: the candidates,
-// computed by groups. Between the leftmost and the rightmost candidate, a pixel that no piece
-// touches lies wholly inside (the triangle's section of the band is convex and reaches both
-// sides of it): its area is 1 without arithmetic. Masks are kept as the areas are stored.
+// Which pixels: a box at most kBoxWalkMaxGroups groups wide is computed whole (walk_box), and
+// there a pixel's area is the difference F(u + 1) - F(u) of the row's integral of covered
+// height from the box's left, F, taken once per lane (9 operations per edge; walk_box gives
+// F). In a wider box, per row each edge's piece inside the band spans a range of pixels: the
+// candidates, computed by groups with I above. Between the leftmost and the rightmost
+// candidate, a pixel that no piece touches lies wholly inside (the triangle's section of the
+// band is convex and reaches both sides of it): its area is 1 without arithmetic. Masks are
+// kept as the areas are stored.
 //
 // Error (the tolerance of pixel_area.hpp), in pixels, x measured from the left side of the
 // box's first tile (0 <= u < 2^15 + 8), eps = 2^-53:
@@ -44,6 +47,10 @@
 //   1 + 2^-10 (b - a exceeds the ramp's width 1 / |s| by at most twice the error of A, B, and
 //   |s| < 2^24): at most 3.01 * 2^-35.5 from a, b and A; the roundings of (a + b) (2^-37 times
 //   |(b - a) s / 2| <= 1) and of the rest (a few eps) add below 2^-36.
+// - The box walk's F(u + 1) - F(u) is the same integral I; x < 2^6 there (kBoxWalkMaxGroups
+//   groups and a tile's offset), so every term of F lies below 2^7 and F below 2^9: its
+//   roundings add at most 2^-40, the difference's 2^-39; A, B and A' - 2 A enter as above
+//   (where the edge misses the row, p = A' = B' and the ramp term is exactly 0).
 // Per edge below 2^-33.6, three edges and their sum below 2^-32; areas at most 2^-32
 // (kAreaRoundOff) are reported as 0, which removes all round-off where the triangle does not
 // reach and misses a true sliver that small by at most as much; the rounding to float adds
