@@ -437,6 +437,8 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
   AreaEdge edges[3];
   set_up_area_edges(tri, origin, edges);
   row_tiles.resize(static_cast<std::size_t>(columns));
+  // Held apart from the vector: stores of areas could alias its pointer.
+  AreaTile* const tiles = row_tiles.data();
   alignas(64) double lane_offsets[kLanes];
   for (int l = 0; l < kLanes; ++l)
     lane_offsets[l] = static_cast<double>(l);
@@ -467,7 +469,7 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
       const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
       set_up_box_rows<Wide>(edges, ramp_edges, kRamp, ty * kTileSize, r_begin, r_end, rows);
       for (std::int32_t c = 0; c < columns; ++c) {
-        AreaTile& tile = row_tiles[static_cast<std::size_t>(c)];
+        AreaTile& tile = tiles[c];
         tile.triangle = triangle;
         tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
         tile.tile_y = static_cast<std::uint16_t>(ty);
@@ -502,7 +504,7 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           const Doubles area = xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
           // x >= 0: the tile and the column by shifts.
           const auto column = static_cast<std::uint32_t>(x);
-          AreaTile& tile = row_tiles[column / kTileSize];
+          AreaTile& tile = tiles[column / kTileSize];
           const std::uint32_t at = static_cast<std::uint32_t>(r) * kTileSize + column % kTileSize;
           store_as_floats(area, tile.area + at);
           tile.mask |= std::uint64_t{positive_lanes(area)} << at;
@@ -510,8 +512,8 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           covered = covered_next;
         }
       }
-      for (const AreaTile& tile : row_tiles) {
-        if (tile.mask != 0) emit(tile);
+      for (std::int32_t c = 0; c < columns; ++c) {
+        if (tiles[c].mask != 0) emit(tiles[c]);
       }
     }
   };
@@ -559,6 +561,8 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
   AreaEdge edges[3];
   set_up_area_edges(tri, origin, edges);
   row_tiles.resize(static_cast<std::size_t>(columns));
+  // Held apart from the vector: stores of areas could alias its pointer.
+  AreaTile* const tiles = row_tiles.data();
   alignas(64) double lane_offsets[kLanes];
   for (int l = 0; l < kLanes; ++l)
     lane_offsets[l] = static_cast<double>(l);
@@ -590,7 +594,7 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
       // of each tile the span reaches starts as 1 there and 0 elsewhere (a tile is cleared
       // when first reached), and the candidates' areas replace it.
       for (std::int32_t c = span_first / kTileSize; c <= (span_end - 1) / kTileSize; ++c) {
-        AreaTile& tile = row_tiles[static_cast<std::size_t>(c)];
+        AreaTile& tile = tiles[c];
         if (tile.tile_y == kUntouched) {
           tile.triangle = triangle;
           tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
@@ -652,7 +656,7 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
           for (; x < end[e]; x += kLanes) {
             // x >= 0: the tile and the column by shifts.
             const auto column = static_cast<std::uint32_t>(x);
-            AreaTile& tile = row_tiles[column / kTileSize];
+            AreaTile& tile = tiles[column / kTileSize];
             const Doubles area = row_areas<kRamp, kWhole>(
                 row_edges, Doubles(static_cast<double>(x)) + lane_columns, box_begin, box_end);
             const std::uint32_t at = static_cast<std::uint32_t>(r) * kTileSize + column % kTileSize;
@@ -696,8 +700,8 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
           break;
       }
     }
-    for (AreaTile& tile : row_tiles) {
-      if (tile.tile_y != kUntouched && tile.mask != 0) emit(tile);
+    for (std::int32_t c = 0; c < columns; ++c) {
+      if (tiles[c].tile_y != kUntouched && tiles[c].mask != 0) emit(tiles[c]);
     }
   }
 }
