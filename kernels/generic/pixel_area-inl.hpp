@@ -150,34 +150,34 @@ inline std::uint32_t positive_lanes(xsimd::batch<double, Arch> v) {
   }
 }
 
-// Lanes 1 .. n - 1 of `v` followed by lane 0 of `next`: the values one lane further on.
+// The last lane of `before` followed by lanes 0 .. n - 2 of `v`: the values one lane back.
 template <class Arch>
-inline xsimd::batch<double, Arch> next_lanes(xsimd::batch<double, Arch> v,
-                                             xsimd::batch<double, Arch> next) {
+inline xsimd::batch<double, Arch> previous_lanes(xsimd::batch<double, Arch> before,
+                                                 xsimd::batch<double, Arch> v) {
 #if defined(__AVX512F__)
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     return _mm512_castsi512_pd(
-        _mm512_alignr_epi64(_mm512_castpd_si512(next), _mm512_castpd_si512(v), 1));
+        _mm512_alignr_epi64(_mm512_castpd_si512(v), _mm512_castpd_si512(before), 7));
   } else
 #endif
 #if defined(__AVX2__)
       if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    // (v2, v3, next0, next1), then v1, v2 from v and its halves' odd lanes.
-    return _mm256_shuffle_pd(v, _mm256_permute2f128_pd(v, next, 0x21), 0x5);
+    // (before2, before3, v0, v1), then its odd lanes with v's even ones.
+    return _mm256_shuffle_pd(_mm256_permute2f128_pd(before, v, 0x21), v, 0x5);
   } else
 #endif
 #if defined(__SSE2__)
       if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
-    return _mm_shuffle_pd(v, next, 1);
+    return _mm_shuffle_pd(before, v, 1);
   } else
 #endif
 #if defined(__aarch64__)
       if constexpr (std::is_base_of_v<xsimd::neon64, Arch>) {
-    return vextq_f64(v, next, 1);
+    return vextq_f64(before, v, 1);
   } else
 #endif
   {
-    static_assert(!sizeof(Arch), "next_lanes: no implementation for this architecture");
+    static_assert(!sizeof(Arch), "previous_lanes: no implementation for this architecture");
   }
 }
 
@@ -421,7 +421,8 @@ void set_up_box_rows(const AreaEdge* edges, const int* ramp_edges, int ramps, st
 // [L, R]), so with p = clamp(x, A', B'), up to a constant,
 //     F(x) = clamp(x, B', R) + (p - A') (p + A' - 2 A) s / 2;
 // where it falls, 1 from L to A', a ramp down to 0 at B', so F(x) = clamp(x, L, B') - the same
-// ramp term. Per edge 9 lane operations, and one evaluation per group of pixels.
+// ramp term. Per edge 9 lane operations, F once per group: at the pixels' right sides, a
+// pixel's left side being the lane before (the previous group's last lane).
 template <class Arch, class Emit>
 void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
               std::uint32_t triangle, Emit&& emit) {
@@ -492,15 +493,18 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           row_edges.whole =
               Doubles(edge.sign * (height < 0.0 ? 0.0 : (height > 1.0 ? 1.0 : height)));
         }
-        Doubles u = Doubles(static_cast<double>(group_begin)) + lane_columns;
-        Doubles covered = covered_up_to<kRamp, kWhole>(row_edges, u);
+        // F at the pixels' right sides, and at the first one's left side where that pixel
+        // lies in the box (else its lane is cleared).
+        Doubles right_side = Doubles(static_cast<double>(group_begin + 1)) + lane_columns;
+        Doubles before = x_begin == group_begin
+                             ? covered_up_to<kRamp, kWhole>(
+                                   row_edges, right_side - Doubles(static_cast<double>(kLanes)))
+                             : Doubles(0.0);
         for (std::int32_t x = group_begin; x < x_end; x += kLanes) {
-          // F at the next group's lanes, where the last pixel needs it.
-          const Doubles u_next = u + Doubles(static_cast<double>(kLanes));
-          const Doubles covered_next =
-              x + kLanes <= x_end ? covered_up_to<kRamp, kWhole>(row_edges, u_next) : covered;
-          const Doubles sum = next_lanes(covered, covered_next) - covered;
-          const auto keep = (sum > Doubles(kAreaRoundOff)) & (u >= box_begin) & (u < box_end);
+          const Doubles covered = covered_up_to<kRamp, kWhole>(row_edges, right_side);
+          const Doubles sum = covered - previous_lanes(before, covered);
+          const auto keep =
+              (sum > Doubles(kAreaRoundOff)) & (right_side > box_begin) & (right_side <= box_end);
           const Doubles area = xsimd::select(keep, xsimd::min(sum, Doubles(1.0)), Doubles(0.0));
           // x >= 0: the tile and the column by shifts.
           const auto column = static_cast<std::uint32_t>(x);
@@ -508,8 +512,8 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
           const std::uint32_t at = static_cast<std::uint32_t>(r) * kTileSize + column % kTileSize;
           store_as_floats(area, tile.area + at);
           tile.mask |= std::uint64_t{positive_lanes(area)} << at;
-          u = u_next;
-          covered = covered_next;
+          right_side = right_side + Doubles(static_cast<double>(kLanes));
+          before = covered;
         }
       }
       for (std::int32_t c = 0; c < columns; ++c) {
