@@ -76,10 +76,10 @@
 #include "edgewise/pixel_area.hpp"
 #include "lane_arch-inl.hpp"
 #include "simd_ops-inl.hpp"
-#include "tile_masks-inl.hpp"
-#include "triangle_setup-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+
+static_assert(kTileSize == 8, "a tile's row of areas is one byte of its mask");
 
 // A triangle's snapped vertices (fixed point), as the input gives them.
 struct AreaTriangle {
