@@ -47,10 +47,11 @@
 //   1 + 2^-10 (b - a exceeds the ramp's width 1 / |s| by at most twice the error of A, B, and
 //   |s| < 2^24): at most 3.01 * 2^-35.5 from a, b and A; the roundings of (a + b) (2^-37 times
 //   |(b - a) s / 2| <= 1) and of the rest (a few eps) add below 2^-36.
-// - The box walk's F(u + 1) - F(u) is the same integral I; x < 2^6 there (kBoxWalkMaxGroups
-//   groups and a tile's offset), so every term of F lies below 2^7 and F below 2^9: its
-//   roundings add at most 2^-40, the difference's 2^-39; A, B and A' - 2 A enter as above
-//   (where the edge misses the row, p = A' = B' and the ramp term is exactly 0).
+// - The box walk's F(u + 1) - F(u) is the same integral I. There x lies in [0, 64]
+//   (kBoxWalkReach) and the row's constants are clamped to it (set_up_box_rows()), so every
+//   term of F lies in [0, 64] and F below 2^9: its roundings add at most 2^-40, the
+//   difference's 2^-39; A, B and A' - 2 A enter as above (where the edge misses the row,
+//   p = A' = B' and the ramp term is exactly 0).
 // Per edge below 2^-33.6, three edges and their sum below 2^-32; areas at most 2^-32
 // (kAreaRoundOff) are reported as 0, which removes all round-off where the triangle does not
 // reach and misses a true sliver that small by at most as much; the rounding to float adds
@@ -373,8 +374,18 @@ inline xsimd::batch<double, Arch> covered_up_to(const BoxRowEdges<Arch>& edges,
   return sum;
 }
 
+// Every x where the box walk takes F, from the origin, lies in [0, kBoxWalkReach]: the box's
+// first pixel is at most 7 to the right of the origin, and its groups end at most kLanes <= 8
+// past the box.
+inline constexpr double kBoxWalkReach = 64.0;
+static_assert(7 + (kBoxWalkMaxGroups + 1) * 8 <= kBoxWalkReach);
+
 // The box walk's per-row constants of its sloped edges, rows r_begin .. r_end - 1 of a tile
-// row, kLanes rows at a time (the ramp [A', B'] as set_up_bands() finds it).
+// row, kLanes rows at a time: the ramp [A', B'] as set_up_bands() finds it and the extent of
+// the edge's flat part, all clamped to [0, kBoxWalkReach]. Over that range F changes only by a
+// constant of the row (clamp(x, from, to) and p = clamp(x, A', B') are the same there, the ramp
+// term moves by s / 2 ((A'' - A)^2 - (A' - A)^2) with A'' the clamped A'), and every term of F
+// stays within [0, kBoxWalkReach] (the ramp term: (p - A'') times a height of at most 1).
 struct BoxRows {
   alignas(64) double start[3][kTileSize];
   alignas(64) double end[3][kTileSize];
@@ -392,9 +403,12 @@ void set_up_box_rows(const AreaEdge* edges, const int* ramp_edges, int ramps, st
   for (int l = 0; l < kLanes; ++l)
     offsets[l] = static_cast<double>(l);
   const Doubles lane_rows = Doubles::load_aligned(offsets);
+  const Doubles zero(0.0), reach(kBoxWalkReach);
   for (int i = 0; i < ramps; ++i) {
     const AreaEdge& edge = edges[ramp_edges[i]];
     const Doubles left(edge.left), right(edge.right), x0(edge.x0), y0(edge.y0);
+    const Doubles near_left = xsimd::min(xsimd::max(left, zero), reach);
+    const Doubles near_right = xsimd::min(xsimd::max(right, zero), reach);
     const Doubles inverse_slope(edge.inverse_slope);
     for (int k = r_begin - r_begin % kLanes; k < r_end; k += kLanes) {
       const Doubles top_y = Doubles(static_cast<double>(top_row + k)) + lane_rows;
@@ -402,13 +416,15 @@ void set_up_box_rows(const AreaEdge* edges, const int* ramp_edges, int ramps, st
       const Doubles top = x0 + (top_y - y0) * inverse_slope;
       const Doubles bottom = x0 + ((top_y + Doubles(1.0)) - y0) * inverse_slope;
       const Doubles start = edge.rising ? top : bottom, end = edge.rising ? bottom : top;
-      const Doubles clamped_start = xsimd::min(xsimd::max(start, left), right);
-      const Doubles clamped_end = xsimd::min(xsimd::max(end, left), right);
+      // Clamped to [L, R], then to [0, kBoxWalkReach] ([L, R] clamped to it first keeps the
+      // order).
+      const Doubles clamped_start = xsimd::min(xsimd::max(start, near_left), near_right);
+      const Doubles clamped_end = xsimd::min(xsimd::max(end, near_left), near_right);
       clamped_start.store_aligned(&rows.start[i][k]);
       clamped_end.store_aligned(&rows.end[i][k]);
       (clamped_start - (start + start)).store_aligned(&rows.offset[i][k]);
-      (edge.rising ? clamped_end : left).store_aligned(&rows.from[i][k]);
-      (edge.rising ? right : clamped_end).store_aligned(&rows.to[i][k]);
+      (edge.rising ? clamped_end : near_left).store_aligned(&rows.from[i][k]);
+      (edge.rising ? near_right : clamped_end).store_aligned(&rows.to[i][k]);
     }
   }
 }
