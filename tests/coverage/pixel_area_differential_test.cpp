@@ -137,6 +137,49 @@ TEST_P(AreaDifferential, EverySourceWithinTheTolerance) {
               std::string(name_of(isa())).c_str(), static_cast<unsigned long long>(pixels), worst);
 }
 
+// Boxes from one pixel to several times kBoxWalkMaxGroups groups of lanes wide (narrow ones are
+// computed whole, wide ones by candidates per row), with horizontal and vertical edges among
+// them, against the reference pixel by pixel.
+TEST_P(AreaDifferential, NarrowAndWideBoxesWithinTheTolerance) {
+  const double tolerance = kPixelAreaTolerance + reference::kPixelAreaErrorBound;
+  Random random(0xa7ea'b0c5);
+  const RasterTarget target{256, 256, std::nullopt};
+  std::uint64_t pixels = 0;
+  for (int batch = 0; batch < 16; ++batch) {
+    std::vector<Vec2> vertices;
+    for (int t = 0; t < 48; ++t) {
+      const double width = random.log_uniform(0.5, 160.0), height = random.log_uniform(0.5, 160.0);
+      const double x = random.uniform(-8.0, 256.0 - width + 8.0);
+      const double y = random.uniform(-8.0, 256.0 - height + 8.0);
+      Vec2 tri[3];
+      for (Vec2& v : tri) {
+        v = {static_cast<float>(x + random.uniform(0.0, width)),
+             static_cast<float>(y + random.uniform(0.0, height))};
+      }
+      if (t % 4 == 1) tri[1].y = tri[0].y;  // a horizontal edge
+      if (t % 4 == 2) tri[2].x = tri[1].x;  // a vertical edge
+      vertices.insert(vertices.end(), tri, tri + 3);
+    }
+    const AreaRun expected = run_areas(Isa::reference, vertices, target, CullMode::none);
+    const AreaRun actual = run_areas(isa(), vertices, target, CullMode::none);
+    AreaMap want, got;
+    ASSERT_TRUE(well_formed(expected, want)) << "batch " << batch << " (reference)";
+    ASSERT_TRUE(well_formed(actual, got)) << "batch " << batch;
+    for (const auto& [key, area] : want)
+      got.try_emplace(key, 0.0f);
+    for (const auto& [key, area] : got) {
+      const auto found = want.find(key);
+      const double reference_area = found == want.end() ? 0.0 : double(found->second);
+      ++pixels;
+      ASSERT_LE(std::abs(double(area) - reference_area), tolerance)
+          << "batch " << batch << ": triangle " << std::get<0>(key) << " pixel ("
+          << std::get<2>(key) << ", " << std::get<1>(key) << "): reference " << reference_area
+          << ", " << name_of(isa()) << " " << area;
+    }
+  }
+  EXPECT_GT(pixels, 50000u);
+}
+
 // Summed over a triangle's pixels, the areas give the triangle's area (one triangle inside the
 // target, so that nothing is clipped): n pixels within the tolerance each.
 TEST_P(AreaDifferential, PixelsAddUpToTheTriangle) {
