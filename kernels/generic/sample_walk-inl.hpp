@@ -17,7 +17,7 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -92,7 +92,7 @@ template <class Arch, class Int, class Visitor>
         const std::uint64_t clip =
             rows & column_bits(box.x0 > tx ? box.x0 - tx : 0,
                                box.x1 - tx < kTileSize ? box.x1 - tx : kTileSize);
-        // The edges that may exclude a sample of the tile: only those are evaluated.
+        // The edges that may exclude a sample of the tile; one alone is evaluated alone.
         const unsigned crossing = (g[0] + accept_offset[0] < 0 ? 1u : 0u) |
                                   (g[1] + accept_offset[1] < 0 ? 2u : 0u) |
                                   (g[2] + accept_offset[2] < 0 ? 4u : 0u);
@@ -101,18 +101,21 @@ template <class Arch, class Int, class Visitor>
           for (std::size_t k = 0; k < samples; ++k)
             masks[k] = clip;
           any = clip;
+        } else if ((crossing & (crossing - 1)) == 0) {
+          const int e = std::countr_zero(crossing);
+          for (std::size_t k = 0; k < samples; ++k) {
+            masks[k] =
+                evaluator.coverage_of_edge(e, clamp_to_tile_range(g[e] + delta[e][k])) & clip;
+            any |= masks[k];
+          }
         } else {
-          evaluator.coverage_of(
-              crossing, samples,
-              [&](std::size_t k) {
-                return std::array<std::int32_t, 3>{clamp_to_tile_range(g[0] + delta[0][k]),
-                                                   clamp_to_tile_range(g[1] + delta[1][k]),
-                                                   clamp_to_tile_range(g[2] + delta[2][k])};
-              },
-              [&](std::size_t k, std::uint64_t mask) {
-                masks[k] = mask & clip;
-                any |= masks[k];
-              });
+          for (std::size_t k = 0; k < samples; ++k) {
+            const std::int32_t tile_g[3] = {clamp_to_tile_range(g[0] + delta[0][k]),
+                                            clamp_to_tile_range(g[1] + delta[1][k]),
+                                            clamp_to_tile_range(g[2] + delta[2][k])};
+            masks[k] = evaluator.coverage(tile_g) & clip;
+            any |= masks[k];
+          }
         }
         if (any != 0) {
           visitor.sample_tile(first_tile_x + column, static_cast<std::uint32_t>(ty / kTileSize),

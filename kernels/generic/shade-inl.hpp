@@ -212,11 +212,10 @@ class ShadingVisitor {
     std::uint32_t* color = batch_.color_tiles + tile_index * samples * 64;
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
     const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
-    std::uint64_t covered = 0, in_every_sample = ~std::uint64_t{0}, fragments = 0;
+    std::uint64_t covered = 0, fragments = 0;
     for (std::uint64_t mask : masks) {
       fragments += static_cast<std::uint64_t>(std::popcount(mask));
       covered |= mask;
-      in_every_sample &= mask;
     }
     fragments_ += fragments;
     if (skips_hidden_tile(tile_index, px, py)) return;
@@ -236,30 +235,29 @@ class ShadingVisitor {
     if (textured_) {
       tile_passed = shade_textured_samples(masks, depth, color, px, py, columns, terms);
     } else {
-      // The test and the kind of tile chosen by a switch rather than through with_depth_test():
+      // The test chosen by a switch rather than through with_depth_test():
       // the lambda's captures would be built in memory for every tile.
-      const bool full = in_every_sample == ~std::uint64_t{0};
       const bool write = batch_.depth_write;
       switch (batch_.depth_test) {
         case DepthTest::less:
-          tile_passed = shade_samples_as<DepthTest::less>(full, write, masks, covered, depth, color,
-                                                          px, py, columns, terms);
+          tile_passed = shade_samples_as<DepthTest::less>(write, masks, covered, depth, color, px,
+                                                          py, columns, terms);
           break;
         case DepthTest::less_equal:
-          tile_passed = shade_samples_as<DepthTest::less_equal>(full, write, masks, covered, depth,
-                                                                color, px, py, columns, terms);
+          tile_passed = shade_samples_as<DepthTest::less_equal>(write, masks, covered, depth, color,
+                                                                px, py, columns, terms);
           break;
         case DepthTest::greater:
-          tile_passed = shade_samples_as<DepthTest::greater>(full, write, masks, covered, depth,
-                                                             color, px, py, columns, terms);
+          tile_passed = shade_samples_as<DepthTest::greater>(write, masks, covered, depth, color,
+                                                             px, py, columns, terms);
           break;
         case DepthTest::always:
-          tile_passed = shade_samples_as<DepthTest::always>(full, write, masks, covered, depth,
-                                                            color, px, py, columns, terms);
+          tile_passed = shade_samples_as<DepthTest::always>(write, masks, covered, depth, color, px,
+                                                            py, columns, terms);
           break;
         case DepthTest::never:
-          tile_passed = shade_samples_as<DepthTest::never>(full, write, masks, covered, depth,
-                                                           color, px, py, columns, terms);
+          tile_passed = shade_samples_as<DepthTest::never>(write, masks, covered, depth, color, px,
+                                                           py, columns, terms);
           break;
       }
     }
@@ -310,31 +308,22 @@ class ShadingVisitor {
     }
   }
 
-  // shade_samples() for a full tile or not, with depth writes or not.
+  // shade_samples() with depth writes or not.
   template <DepthTest Test>
-  [[gnu::always_inline]] std::uint64_t shade_samples_as(bool full, bool write,
+  [[gnu::always_inline]] std::uint64_t shade_samples_as(bool write,
                                                         std::span<const std::uint64_t> masks,
                                                         std::uint64_t covered, float* depth,
                                                         std::uint32_t* color, std::int32_t px,
                                                         std::int32_t py, const ColumnTerms& columns,
                                                         const SampleDepthTerms& terms) {
-    if (full) {
-      return write ? shade_samples<Test, true, true>(masks, covered, depth, color, px, py, columns,
-                                                     terms)
-                   : shade_samples<Test, false, true>(masks, covered, depth, color, px, py, columns,
-                                                      terms);
-    }
-    return write ? shade_samples<Test, true, false>(masks, covered, depth, color, px, py, columns,
-                                                    terms)
-                 : shade_samples<Test, false, false>(masks, covered, depth, color, px, py, columns,
-                                                     terms);
+    return write ? shade_samples<Test, true>(masks, covered, depth, color, px, py, columns, terms)
+                 : shade_samples<Test, false>(masks, covered, depth, color, px, py, columns, terms);
   }
 
   // Untextured multisampled tiles in one pass over the covered rows: per batch of lanes, the
   // colour at the pixel centres, then per sample with covered lanes the depth test and the
-  // writes. Returns the samples that passed. A tile every sample of which is covered (Full) needs
-  // no lane masks.
-  template <DepthTest Test, bool WriteDepth, bool Full>
+  // writes. Returns the samples that passed.
+  template <DepthTest Test, bool WriteDepth>
   [[gnu::always_inline]] std::uint64_t shade_samples(std::span<const std::uint64_t> masks,
                                                      std::uint64_t covered, float* depth,
                                                      std::uint32_t* color, std::int32_t px,
@@ -352,12 +341,11 @@ class ShadingVisitor {
         const Ints packed = pack_rgba8_lanes<Arch>(channel);
         for (std::size_t k = 0; k < samples; ++k) {
           const std::uint32_t lanes = static_cast<std::uint32_t>(masks[k] >> at) & kLaneBits;
-          if (!Full && lanes == 0) continue;
+          if (lanes == 0) continue;
           float* sample_depth = depth + k * 64;
           const Floats z = clamp01(Floats(sample_row_base_[k][row]) + terms.column[k][h]);
           const Floats stored = Floats::load_aligned(sample_depth + at);
-          Mask write = passes<Test>(z, stored);
-          if constexpr (!Full) write = write && lanes_of_bits<Arch>(lanes);
+          const Mask write = lanes_of_bits<Arch>(lanes) && passes<Test>(z, stored);
           if constexpr (WriteDepth)
             xsimd::select(write, z, stored).store_aligned(sample_depth + at);
           write_colour(color + k * 64, row, h, write, packed);

@@ -87,62 +87,21 @@ class TileEvaluator {
     return ~sign_bits_8x8<Arch>(any_outside);
   }
 
-  // coverage() with only the edges of the set `Edges` (bit e for edge e) evaluated: the others
-  // are known to hold every sample of the block (an empty set is not asked for).
-  template <unsigned Edges>
-  std::uint64_t coverage_of(const std::int32_t g[3]) const {
-    static_assert(Edges != 0 && Edges < 8, "a nonempty set of the three edges");
-    Lanes v[3][kStepsPerRow];
-    for (int e = 0; e < 3; ++e) {
-      if ((Edges >> e) & 1u) {
-        for (std::size_t h = 0; h < kStepsPerRow; ++h)
-          v[e][h] = Lanes(g[e]) + column_offset_[e][h];
-      }
-    }
+  // coverage() of edge e alone, for a block that the other two edges hold whole.
+  std::uint64_t coverage_of_edge(int e, std::int32_t g) const {
+    const Lanes g0(g);
+    Lanes v[kStepsPerRow];
+    for (std::size_t h = 0; h < kStepsPerRow; ++h)
+      v[h] = g0 + column_offset_[e][h];
     constexpr std::size_t kSteps = kTileSize / kRowsPerStep;
-    Lanes any_outside[kSteps * kStepsPerRow];
+    Lanes outside[kSteps * kStepsPerRow];  // negative where the edge excludes the sample
     for (std::size_t step = 0; step < kSteps; ++step) {
       for (std::size_t h = 0; h < kStepsPerRow; ++h) {
-        Lanes outside(0);
-        for (int e = 0; e < 3; ++e) {
-          if ((Edges >> e) & 1u) {
-            outside = outside | v[e][h];
-            v[e][h] += row_step_[e];
-          }
-        }
-        any_outside[step * kStepsPerRow + h] = outside;
+        outside[step * kStepsPerRow + h] = v[h];
+        v[h] += row_step_[e];
       }
     }
-    return ~sign_bits_8x8<Arch>(any_outside);
-  }
-
-  // coverage_of() with a set chosen at run time, for `count` blocks at once (the set dispatched
-  // once): `g_of(k)` gives block k's G values, `f(k, mask)` takes its coverage.
-  template <class G, class F>
-  [[gnu::always_inline]] void coverage_of(unsigned edges, std::size_t count, G&& g_of,
-                                          F&& f) const {
-    const auto run = [&](auto set) {
-      for (std::size_t k = 0; k < count; ++k) {
-        const auto g = g_of(k);
-        f(k, coverage_of<decltype(set)::value>(g.data()));
-      }
-    };
-    switch (edges) {
-      case 1:
-        return run(std::integral_constant<unsigned, 1>{});
-      case 2:
-        return run(std::integral_constant<unsigned, 2>{});
-      case 3:
-        return run(std::integral_constant<unsigned, 3>{});
-      case 4:
-        return run(std::integral_constant<unsigned, 4>{});
-      case 5:
-        return run(std::integral_constant<unsigned, 5>{});
-      case 6:
-        return run(std::integral_constant<unsigned, 6>{});
-      default:
-        return run(std::integral_constant<unsigned, 7>{});
-    }
+    return ~sign_bits_8x8<Arch>(outside);
   }
 
  private:
