@@ -23,6 +23,7 @@
 #include "../src/depth_plane.hpp"
 #include "../src/shade_batch.hpp"
 #include "interpolation-inl.hpp"
+#include "method_interpolator-inl.hpp"
 #include "plane_setup-inl.hpp"
 #include "sample_walk-inl.hpp"
 #include "simd_ops-inl.hpp"
@@ -31,7 +32,7 @@
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
-template <class Arch, InterpolationMethod Method>
+template <class Arch>
 class ShadingVisitor {
  public:
   using Floats = xsimd::batch<float, Arch>;
@@ -43,9 +44,9 @@ class ShadingVisitor {
 
   explicit ShadingVisitor(const detail::ShadeBatch& batch)
       : batch_(batch),
-        interpolator_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, 0.0, 0.0),
+        interpolator_(batch.method, ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}, 0.0, 0.0),
         divide_(ScreenTriangle{{0, 1, 0}, {0, 0, 1}, {1, 1, 1}}),
-        colour_planes_(Method == InterpolationMethod::plane_equations &&
+        colour_planes_(batch.method == InterpolationMethod::plane_equations &&
                        (batch.shading == Shading::gouraud || batch.shading == Shading::diffuse)),
         normal_planes_(colour_planes_ && batch.shading == Shading::diffuse),
         keep_bounds_(batch.tile_max_depth != nullptr && batch.depth_write),
@@ -152,7 +153,7 @@ class ShadingVisitor {
       texture_.begin_triangle(detail::make_texture_planes(p, uv, screen.w, batch_.perspective),
                               batch_.derivatives);
     if (!colour_planes_ && batch_.shading != Shading::flat) {
-      interpolator_ = ScreenInterpolator<Arch, Method>(screen, origin_x_, origin_y_);
+      interpolator_ = MethodInterpolator<Arch>(batch_.method, screen, origin_x_, origin_y_);
       if (perspective_) divide_ = PerspectiveDivide<Arch>(screen);
     }
   }
@@ -183,7 +184,8 @@ class ShadingVisitor {
     if (textured_) {
       shade_textured_rows(mask, rows, depth, color, px, py, columns, colour_row_bases, stored_max);
     } else {
-      with_depth_test([&](auto test) {
+      // Inlined: as a call, its captures go through memory for every tile.
+      with_depth_test([&](auto test) EDGEWISE_INLINE_LAMBDA {
         shade_rows<decltype(test)::value>(mask, rows, depth, color, px, py, columns,
                                           colour_row_bases, stored_max);
       });
@@ -562,15 +564,13 @@ class ShadingVisitor {
                                          const ColumnTerms& columns,
                                          const float (*colour_row_bases)[kTileSize],
                                          Floats& stored_max) {
-    if constexpr (Method == InterpolationMethod::plane_equations) {
-      if (colour_planes_ && batch_.depth_write) {
-        if (normal_planes_) {
-          return shade_planar_choice<Test, RowTermsPerRow, true>(
-              mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
-        }
-        return shade_planar_choice<Test, RowTermsPerRow, false>(
+    if (colour_planes_ && batch_.depth_write) {
+      if (normal_planes_) {
+        return shade_planar_choice<Test, RowTermsPerRow, true>(
             mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
       }
+      return shade_planar_choice<Test, RowTermsPerRow, false>(mask, rows, depth, color, py, columns,
+                                                              colour_row_bases, stored_max);
     }
     alignas(64) float row_bases[kPlanes][kTileSize];
     if constexpr (RowTermsPerRow) {
@@ -998,7 +998,7 @@ class ShadingVisitor {
   }
 
   const detail::ShadeBatch& batch_;
-  ScreenInterpolator<Arch, Method> interpolator_;
+  MethodInterpolator<Arch> interpolator_;
   PerspectiveDivide<Arch> divide_;
   // Fixed for the batch.
   const bool colour_planes_;  // Gouraud or diffuse colour from the group's planes
@@ -1037,11 +1037,11 @@ class ShadingVisitor {
 
 // The shading visitor of a multisampled target: the walks deliver every sample's masks
 // (sample_tile).
-template <class Arch, InterpolationMethod Method>
-class MultisampleShadingVisitor : public ShadingVisitor<Arch, Method> {
+template <class Arch>
+class MultisampleShadingVisitor : public ShadingVisitor<Arch> {
  public:
   static constexpr bool kMultisample = true;
-  using ShadingVisitor<Arch, Method>::ShadingVisitor;
+  using ShadingVisitor<Arch>::ShadingVisitor;
 };
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -1,6 +1,6 @@
 // The few operations xsimd 8.1 lacks, per architecture: collecting lane sign bits, lane masks
 // from and to bits, a float comparison's lanes as integers, and a correctly rounded division on
-// AArch64.
+// AArch64; and the inlining attributes the kernels force where GCC would call instead.
 #pragma once
 
 #include <cstddef>
@@ -15,6 +15,11 @@
 #if defined(__ARM_NEON)
 #include <arm_neon.h>
 #endif
+
+#define EDGEWISE_INLINE [[gnu::always_inline]] inline
+// For lambdas in loops: inlined (GCC otherwise calls each once per batch, passing the queries
+// and results through memory).
+#define EDGEWISE_INLINE_LAMBDA __attribute__((always_inline))
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

@@ -12,6 +12,7 @@
 #include <xsimd/xsimd.hpp>
 
 #include "../src/sample_kernels.hpp"
+#include "simd_ops-inl.hpp"
 
 #if defined(__SSSE3__)
 #include <immintrin.h>
@@ -30,11 +31,6 @@ struct LevelLanes {
   xsimd::batch<std::int32_t, Arch> width, height, start;
   xsimd::batch<float, Arch> widthf, heightf;
 };
-
-#define EDGEWISE_INLINE [[gnu::always_inline]] inline
-// For lambdas in loops: inlined (GCC otherwise calls each once per batch, passing the queries
-// and results through memory).
-#define EDGEWISE_INLINE_LAMBDA __attribute__((always_inline))
 
 // base[index] per lane by one load per lane, for texels: on AMD Zen 3 the AVX2 gather
 // instruction is slower than eight loads there (bilinear on the ground-plane stream: 34 M/s with

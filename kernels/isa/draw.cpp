@@ -9,39 +9,18 @@
 #include "../src/isa_kernels.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
-namespace {
 
-template <InterpolationMethod Method>
-void shade_with(const detail::ShadeBatch& batch, RasterReport& report,
-                detail::ShadeCounts& counts) {
+// One visitor for every interpolation method (method_interpolator-inl.hpp).
+void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
   if (batch.coverage.samples.size() > 1) {
-    MultisampleShadingVisitor<Arch, Method> visitor(batch);
+    MultisampleShadingVisitor<Arch> visitor(batch);
     run_batch(batch.coverage, visitor, report);
     visitor.add_counts(counts);
     return;
   }
-  ShadingVisitor<Arch, Method> visitor(batch);
+  ShadingVisitor<Arch> visitor(batch);
   run_batch(batch.coverage, visitor, report);
   visitor.add_counts(counts);
-}
-
-}  // namespace
-
-void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
-  switch (batch.method) {
-    case InterpolationMethod::nearest_vertex:
-      return shade_with<InterpolationMethod::nearest_vertex>(batch, report, counts);
-    case InterpolationMethod::inverse_distance:
-      return shade_with<InterpolationMethod::inverse_distance>(batch, report, counts);
-    case InterpolationMethod::subtriangle_areas:
-      return shade_with<InterpolationMethod::subtriangle_areas>(batch, report, counts);
-    case InterpolationMethod::edge_functions:
-      return shade_with<InterpolationMethod::edge_functions>(batch, report, counts);
-    case InterpolationMethod::scanline:
-      return shade_with<InterpolationMethod::scanline>(batch, report, counts);
-    case InterpolationMethod::plane_equations:
-      return shade_with<InterpolationMethod::plane_equations>(batch, report, counts);
-  }
 }
 
 void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {
