@@ -4,6 +4,8 @@ the scalar reference, and the comparison with published peer figures and with th
 
 - Coverage/*: triangles/s and pixels/s, against Intel Masked Occlusion Culling and the coverage
   targets;
+- Area/*: exact-area coverage (rasterize_areas()), partially covered pixels/s against the
+  target (AVX2, one core) and the reference;
 - Shading/*: triangles/s, covered fragments/s and written pixels/s of draw(), against the
   shading targets (AVX2, one core); Shading/<isa>/threads:all/*: the same on every core, and the
   ratio all threads / one thread per size;
@@ -36,6 +38,8 @@ import sys
 PEER_MOC = {8: 29.7e6, 64: 22.0e6, 1000: 11.1e6, 200000: 0.384e6}
 # What edgewise aims for (AVX2, one core), triangles/s.
 TARGET = {8: 50e6, 64: 25e6, 1000: 8e6, 200000: 0.5e6}
+# Exact-area coverage target (AVX2, one core): partially covered pixels/s.
+AREA_TARGET = 300e6
 # AVX2 must be at least this much faster than the reference on 1000-px triangles.
 TARGET_AVX2_OVER_REFERENCE_AT_1000 = 8.0
 # Shading targets (AVX2, one core): (counter, rate) per area; small triangles are bound by
@@ -58,6 +62,7 @@ SAMPLE_PEER = {"nearest": "closest", "bilinear": "bilinear", "bicubic_bspline": 
                "trilinear": "trilinear", "anisotropic": "anisotropic16"}
 
 COVERAGE_NAME = re.compile(r"^Coverage/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
+AREA_NAME = re.compile(r"^Area/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 SHADING_NAME = re.compile(r"^Shading/(?P<isa>[a-z0-9_]+)/area:(?P<area>\d+)$")
 ALL_THREADS_NAME = re.compile(r"^Shading/(?P<isa>[a-z0-9_]+)/threads:all/area:(?P<area>\d+)"
                               r"(/real_time)?$")
@@ -213,6 +218,33 @@ def print_coverage(coverage, clear):
         verdict = "met" if speedup >= TARGET_AVX2_OVER_REFERENCE_AT_1000 else "NOT met"
         print(f"AVX2 over reference at 1000 px: {speedup:.1f}x "
               f"(target >= {TARGET_AVX2_OVER_REFERENCE_AT_1000:g}x: {verdict})")
+
+
+def print_areas(areas):
+    print("Exact-area coverage (rasterize_areas()), 1920x1080 target, one thread")
+    header = ["area px", "ISA", "partial px/s", "pixels/s", "triangles/s", "cv", "vs reference",
+              "vs target"]
+    rows = []
+    isas = sorted({isa for _, isa in areas}, key=isa_key)
+    for area in sorted({a for a, _ in areas}):
+        reference = areas.get((area, "reference"), {})
+        for isa in isas:
+            entry = areas.get((area, isa))
+            if entry is None:
+                continue
+            if "error" in entry:
+                rows.append([str(area), isa, "ERROR: " + entry["error"]] + [""] * 5)
+                continue
+            partial = entry["partial_pixels"]
+            rows.append([
+                str(area), isa, si(partial, "/s"), si(entry["pixels"], "/s"),
+                si(entry["triangles"], "/s"), cv_cell(entry),
+                ratio(partial, reference.get("partial_pixels", 0))
+                if "error" not in reference else "-",
+                ratio(partial, AREA_TARGET) if isa == "avx2" else "-",
+            ])
+    print_table(header, rows)
+    print(f"target (AVX2, one core): {si(AREA_TARGET, '')} partially covered pixels/s")
 
 
 def target_text(area):
@@ -591,6 +623,7 @@ def main(argv):
               "this affects the harness only, not the measured code")
 
     coverage = collect(results, COVERAGE_NAME, lambda m: (int(m["area"]), m["isa"]))
+    areas = collect(results, AREA_NAME, lambda m: (int(m["area"]), m["isa"]))
     shading = collect(results, SHADING_NAME, lambda m: (int(m["area"]), m["isa"]))
     plain_depth = collect(results, PLAIN_DEPTH_NAME, lambda m: (int(m["area"]), m["isa"]))
     all_threads = collect(results, ALL_THREADS_NAME, lambda m: (int(m["area"]), m["isa"]))
@@ -606,13 +639,14 @@ def main(argv):
     meshes = collect(results, MESH_DRAW_NAME,
                      lambda m: (m["mesh"], m["isa"], m["threads"] is not None))
     clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
-    if not (coverage or shading or methods or samples or draws or draw_peers or multisample or
-            meshes):
-        print(f"{', '.join(argv[1:])}: no Coverage/*, Shading/*, ShadingMethod/*, Sample/*, "
+    if not (coverage or areas or shading or methods or samples or draws or draw_peers or
+            multisample or meshes):
+        print(f"{', '.join(argv[1:])}: no Coverage/*, Area/*, Shading/*, ShadingMethod/*, Sample/*, "
               "TexturedDraw/*, Multisample/* or DrawPeer/* benchmarks", file=sys.stderr)
         return 1
 
     for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
+                                       (print_areas, areas, (areas,)),
                                        (print_shading, shading, (shading, plain_depth)),
                                        (print_threads, all_threads, (all_threads, shading)),
                                        (print_methods, methods, (methods,)),
