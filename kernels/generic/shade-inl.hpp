@@ -237,31 +237,11 @@ class ShadingVisitor {
     if (textured_) {
       tile_passed = shade_textured_samples(masks, depth, color, px, py, columns, terms);
     } else {
-      // The test chosen by a switch rather than through with_depth_test():
-      // the lambda's captures would be built in memory for every tile.
-      const bool write = batch_.depth_write;
-      switch (batch_.depth_test) {
-        case DepthTest::less:
-          tile_passed = shade_samples_as<DepthTest::less>(write, masks, covered, depth, color, px,
-                                                          py, columns, terms);
-          break;
-        case DepthTest::less_equal:
-          tile_passed = shade_samples_as<DepthTest::less_equal>(write, masks, covered, depth, color,
-                                                                px, py, columns, terms);
-          break;
-        case DepthTest::greater:
-          tile_passed = shade_samples_as<DepthTest::greater>(write, masks, covered, depth, color,
-                                                             px, py, columns, terms);
-          break;
-        case DepthTest::always:
-          tile_passed = shade_samples_as<DepthTest::always>(write, masks, covered, depth, color, px,
-                                                            py, columns, terms);
-          break;
-        case DepthTest::never:
-          tile_passed = shade_samples_as<DepthTest::never>(write, masks, covered, depth, color, px,
-                                                           py, columns, terms);
-          break;
-      }
+      // Inlined: as a call, its captures go through memory for every tile.
+      with_depth_test([&](auto test) EDGEWISE_INLINE_LAMBDA {
+        tile_passed = shade_samples_as<decltype(test)::value>(batch_.depth_write, masks, covered,
+                                                              depth, color, px, py, columns, terms);
+      });
     }
     passed_ += tile_passed;
     // The tile's bound anew from every sample's depth where the writes may have raised it
