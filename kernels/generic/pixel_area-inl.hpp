@@ -63,7 +63,6 @@
 #include <cstdint>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 #include <xsimd/xsimd.hpp>
 
@@ -439,8 +438,8 @@ void set_up_box_rows(const AreaEdge* edges, const int* ramp_edges, int ramps, st
 // where it falls, 1 from L to A', a ramp down to 0 at B', so F(x) = clamp(x, L, B') - the same
 // ramp term. Per edge 9 lane operations, F once per group: at the pixels' right sides, a
 // pixel's left side being the lane before (the previous group's last lane).
-template <class Arch, class Emit>
-void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
+template <class Arch, class Storage, class Emit>
+void walk_box(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
               std::uint32_t triangle, Emit&& emit) {
   using Wide = WideArch<Arch>;
   using Doubles = xsimd::batch<double, Wide>;
@@ -453,9 +452,6 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
   const std::int32_t columns = (box.x1 - 1) / kTileSize - first_tile_x + 1;
   AreaEdge edges[3];
   set_up_area_edges(tri, origin, edges);
-  row_tiles.resize(static_cast<std::size_t>(columns));
-  // Held apart from the vector: stores of areas could alias its pointer.
-  AreaTile* const tiles = row_tiles.data();
   alignas(64) double lane_offsets[kLanes];
   for (int l = 0; l < kLanes; ++l)
     lane_offsets[l] = static_cast<double>(l);
@@ -485,6 +481,7 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
       const int r_begin = box.y0 > ty * kTileSize ? box.y0 - ty * kTileSize : 0;
       const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
       set_up_box_rows<Wide>(edges, ramp_edges, kRamp, ty * kTileSize, r_begin, r_end, rows);
+      AreaTile* const tiles = storage.row(columns);
       for (std::int32_t c = 0; c < columns; ++c) {
         AreaTile& tile = tiles[c];
         tile.triangle = triangle;
@@ -555,14 +552,16 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTil
 }
 
 // Walks a triangle's box a tile row at a time and hands its tiles to `emit` (AreaTile&) in row
-// order. `row_tiles` is the caller's storage, reused from triangle to triangle.
-template <class Arch, class Emit>
-void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaTile>& row_tiles,
+// order. The tiles of a row are made in the caller's storage: storage.row(columns) gives room
+// for `columns` tiles, which stays valid until the row's tiles have been emitted (so a caller
+// can hand out rows of its own output buffer, and emit without copying).
+template <class Arch, class Storage, class Emit>
+void walk_areas(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
                 std::uint32_t triangle, Emit&& emit) {
   constexpr std::int32_t kGroupWidth =
       static_cast<std::int32_t>(xsimd::batch<double, WideArch<Arch>>::size);
   if ((box.x1 - 1) / kGroupWidth - box.x0 / kGroupWidth < kBoxWalkMaxGroups) {
-    walk_box<Arch>(tri, box, row_tiles, triangle, emit);
+    walk_box<Arch>(tri, box, storage, triangle, emit);
     return;
   }
   using Wide = WideArch<Arch>;
@@ -580,9 +579,6 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
   const std::int32_t columns = (box.x1 - 1) / kTileSize - first_tile_x + 1;
   AreaEdge edges[3];
   set_up_area_edges(tri, origin, edges);
-  row_tiles.resize(static_cast<std::size_t>(columns));
-  // Held apart from the vector: stores of areas could alias its pointer.
-  AreaTile* const tiles = row_tiles.data();
   alignas(64) double lane_offsets[kLanes];
   for (int l = 0; l < kLanes; ++l)
     lane_offsets[l] = static_cast<double>(l);
@@ -594,8 +590,9 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, std::vector<AreaT
     const int r_begin = box.y0 > ty * kTileSize ? box.y0 - ty * kTileSize : 0;
     const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
     set_up_bands<Wide>(edges, ty * kTileSize, r_begin, r_end, static_cast<double>(x_end), bands);
-    for (AreaTile& tile : row_tiles)
-      tile.tile_y = kUntouched;
+    AreaTile* const tiles = storage.row(columns);
+    for (std::int32_t c = 0; c < columns; ++c)
+      tiles[c].tile_y = kUntouched;
     for (int r = r_begin; r < r_end; ++r) {
       // The candidates of each edge, clipped to the box.
       std::int32_t first[3], end[3];

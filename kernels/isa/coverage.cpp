@@ -101,10 +101,24 @@ class AreaVisitor {
     const std::int64_t twice_area = (tri.x[1] - tri.x[0]) * (tri.y[2] - tri.y[0]) -
                                     (tri.y[1] - tri.y[0]) * (tri.x[2] - tri.x[0]);
     tri.orientation = twice_area > 0 ? -1.0 : 1.0;
-    walk_areas<Arch>(tri, setup.box, row_tiles_, triangle_, [this](const AreaTile& tile) {
-      buffer_[count_++] = tile;
-      if (count_ == kCapacity) flush();
+    walk_areas<Arch>(tri, setup.box, *this, triangle_, [this](const AreaTile& tile) {
+      // A tile made in place stays there; the others move down over the empty ones (or in
+      // from a row too wide for the buffer).
+      if (&tile != buffer_ + count_) buffer_[count_] = tile;
+      if (++count_ == kCapacity) flush();
     });
+  }
+  // Room for a tile row (walk_areas): the buffer's free end, after a flush if it is short; a
+  // row wider than the buffer is made apart and copied in as its tiles are emitted. In place,
+  // the count can reach kCapacity only at the row's last slot, so no flush comes mid-row.
+  AreaTile* row(std::int32_t columns) {
+    const auto wanted = static_cast<std::size_t>(columns);
+    if (wanted > kCapacity) {
+      wide_row_.resize(wanted);
+      return wide_row_.data();
+    }
+    if (count_ + wanted > kCapacity) flush();
+    return buffer_ + count_;
   }
   void flush() {
     if (count_ != 0) sink_.consume({buffer_, count_});
@@ -116,7 +130,7 @@ class AreaVisitor {
   const detail::TriangleBatch& batch_;
   AreaSink& sink_;
   std::uint32_t triangle_ = 0;
-  std::vector<AreaTile> row_tiles_;
+  std::vector<AreaTile> wide_row_;
   std::size_t count_ = 0;
   AreaTile buffer_[kCapacity];
 };
