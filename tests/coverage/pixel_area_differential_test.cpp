@@ -163,31 +163,42 @@ TEST_P(AreaDifferential, EverySourceWithinTheTolerance) {
               std::string(name_of(isa())).c_str(), static_cast<unsigned long long>(pixels), worst);
 }
 
+// `batches` batches of `count` triangles, each made by make(random, tri), against the reference
+// pixel by pixel; returns the number of pixels compared.
+template <class Make>
+std::uint64_t compare_batches(Isa isa, const RasterTarget& target, int batches, int count,
+                              Random& random, Make make) {
+  std::uint64_t pixels = 0;
+  for (int batch = 0; batch < batches; ++batch) {
+    std::vector<Vec2> vertices;
+    for (int t = 0; t < count; ++t) {
+      Vec2 tri[3];
+      make(random, t, tri);
+      vertices.insert(vertices.end(), tri, tri + 3);
+    }
+    EXPECT_TRUE(matches_reference(isa, vertices, target, pixels)) << "batch " << batch;
+  }
+  return pixels;
+}
+
 // Boxes from one pixel to several times kBoxWalkMaxGroups groups of lanes wide (narrow ones are
 // computed whole, wide ones by candidates per row), with horizontal and vertical edges among
 // them, against the reference pixel by pixel.
 TEST_P(AreaDifferential, NarrowAndWideBoxesWithinTheTolerance) {
   Random random(0xa7ea'b0c5);
   const RasterTarget target{256, 256, std::nullopt};
-  std::uint64_t pixels = 0;
-  for (int batch = 0; batch < 16; ++batch) {
-    std::vector<Vec2> vertices;
-    for (int t = 0; t < 48; ++t) {
-      const double width = random.log_uniform(0.5, 160.0), height = random.log_uniform(0.5, 160.0);
-      const double x = random.uniform(-8.0, 256.0 - width + 8.0);
-      const double y = random.uniform(-8.0, 256.0 - height + 8.0);
-      Vec2 tri[3];
-      for (Vec2& v : tri) {
-        v = {static_cast<float>(x + random.uniform(0.0, width)),
-             static_cast<float>(y + random.uniform(0.0, height))};
-      }
-      if (t % 4 == 1) tri[1].y = tri[0].y;  // a horizontal edge
-      if (t % 4 == 2) tri[2].x = tri[1].x;  // a vertical edge
-      vertices.insert(vertices.end(), tri, tri + 3);
+  const auto make = [](Random& draw, int t, Vec2 tri[3]) {
+    const double width = draw.log_uniform(0.5, 160.0), height = draw.log_uniform(0.5, 160.0);
+    const double x = draw.uniform(-8.0, 256.0 - width + 8.0);
+    const double y = draw.uniform(-8.0, 256.0 - height + 8.0);
+    for (int i = 0; i < 3; ++i) {
+      tri[i] = {static_cast<float>(x + draw.uniform(0.0, width)),
+                static_cast<float>(y + draw.uniform(0.0, height))};
     }
-    ASSERT_TRUE(matches_reference(isa(), vertices, target, pixels)) << "batch " << batch;
-  }
-  EXPECT_GT(pixels, 50000u);
+    if (t % 4 == 1) tri[1].y = tri[0].y;  // a horizontal edge
+    if (t % 4 == 2) tri[2].x = tri[1].x;  // a vertical edge
+  };
+  EXPECT_GT(compare_batches(isa(), target, 16, 48, random, make), 50000u);
 }
 
 // Rows of more tiles than rasterize_areas() buffers for its sink (32): long slivers across a
@@ -195,22 +206,15 @@ TEST_P(AreaDifferential, NarrowAndWideBoxesWithinTheTolerance) {
 TEST_P(AreaDifferential, RowsWiderThanTheOutputBuffer) {
   Random random(0xa7ea'3ede);
   const RasterTarget target{1024, 48, std::nullopt};
-  std::uint64_t pixels = 0;
-  for (int batch = 0; batch < 4; ++batch) {
-    std::vector<Vec2> vertices;
-    for (int t = 0; t < 6; ++t) {
-      const double width = random.uniform(260.0, 1000.0), height = random.uniform(0.5, 40.0);
-      const double x = random.uniform(-8.0, 1024.0 - width + 8.0);
-      const double y = random.uniform(-4.0, 48.0 - height + 4.0);
-      Vec2 tri[3] = {
-          {static_cast<float>(x), static_cast<float>(y + random.uniform(0.0, height))},
-          {static_cast<float>(x + width), static_cast<float>(y)},
-          {static_cast<float>(x + random.uniform(0.0, width)), static_cast<float>(y + height)}};
-      vertices.insert(vertices.end(), tri, tri + 3);
-    }
-    ASSERT_TRUE(matches_reference(isa(), vertices, target, pixels)) << "batch " << batch;
-  }
-  EXPECT_GT(pixels, 20000u);
+  const auto make = [](Random& draw, int, Vec2 tri[3]) {
+    const double width = draw.uniform(260.0, 1000.0), height = draw.uniform(0.5, 40.0);
+    const double x = draw.uniform(-8.0, 1024.0 - width + 8.0);
+    const double y = draw.uniform(-4.0, 48.0 - height + 4.0);
+    tri[0] = {static_cast<float>(x), static_cast<float>(y + draw.uniform(0.0, height))};
+    tri[1] = {static_cast<float>(x + width), static_cast<float>(y)};
+    tri[2] = {static_cast<float>(x + draw.uniform(0.0, width)), static_cast<float>(y + height)};
+  };
+  EXPECT_GT(compare_batches(isa(), target, 4, 6, random, make), 20000u);
 }
 
 // Summed over a triangle's pixels, the areas give the triangle's area (one triangle inside the
