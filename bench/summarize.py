@@ -174,31 +174,40 @@ def print_context(path, data, results):
     return context.get("library_build_type") == "debug"
 
 
+def rows_by_area(results, width, make_row):
+    """A table row per (area, ISA) result, by area then ISA: make_row(area, isa, entry, the
+    area's reference entry), or for a failed benchmark its error in a row `width` cells wide."""
+    rows = []
+    isas = sorted({isa for _, isa in results}, key=isa_key)
+    for area in sorted({a for a, _ in results}):
+        reference = results.get((area, "reference"), {})
+        for isa in isas:
+            entry = results.get((area, isa))
+            if entry is None:
+                continue
+            if "error" in entry:
+                rows.append([str(area), isa, "ERROR: " + entry["error"]] + [""] * (width - 3))
+            else:
+                rows.append(make_row(area, isa, entry, reference))
+    return rows
+
+
 def print_coverage(coverage, clear):
     print("Coverage-only rasterization (count_coverage), 1920x1080 target, one thread")
     clear_pixels = clear.get("pixels") if clear and "error" not in clear else None
     header = ["area px", "ISA", "triangles/s", "pixels/s", "cv", "vs reference", "vs MOC",
               "vs target", "of clear px/s"]
-    rows = []
-    isas = sorted({isa for _, isa in coverage}, key=isa_key)
-    for area in sorted({a for a, _ in coverage}):
-        reference = coverage.get((area, "reference"), {})
-        for isa in isas:
-            entry = coverage.get((area, isa))
-            if entry is None:
-                continue
-            if "error" in entry:
-                rows.append([str(area), isa, "ERROR: " + entry["error"]] + [""] * 6)
-                continue
-            tps, pps = entry["triangles"], entry["pixels"]
-            rows.append([
-                str(area), isa, si(tps, "/s"), si(pps, "/s"), cv_cell(entry),
-                ratio(tps, reference.get("triangles", 0)) if "error" not in reference else "-",
-                ratio(tps, PEER_MOC.get(area, 0)),
-                ratio(tps, TARGET.get(area, 0)),
-                f"{100 * pps / clear_pixels:.1f}%" if clear_pixels else "-",
-            ])
-    print_table(header, rows)
+
+    def row(area, isa, entry, reference):
+        tps, pps = entry["triangles"], entry["pixels"]
+        return [
+            str(area), isa, si(tps, "/s"), si(pps, "/s"), cv_cell(entry),
+            ratio(tps, reference.get("triangles", 0)) if "error" not in reference else "-",
+            ratio(tps, PEER_MOC.get(area, 0)),
+            ratio(tps, TARGET.get(area, 0)),
+            f"{100 * pps / clear_pixels:.1f}%" if clear_pixels else "-",
+        ]
+    print_table(header, rows_by_area(coverage, len(header), row))
 
     print()
     print("peers (triangles/s): Intel Masked Occlusion Culling (AVX2, precise, 1 thread) "
@@ -224,26 +233,16 @@ def print_areas(areas):
     print("Exact-area coverage (rasterize_areas()), 1920x1080 target, one thread")
     header = ["area px", "ISA", "partial px/s", "pixels/s", "triangles/s", "cv", "vs reference",
               "vs target"]
-    rows = []
-    isas = sorted({isa for _, isa in areas}, key=isa_key)
-    for area in sorted({a for a, _ in areas}):
-        reference = areas.get((area, "reference"), {})
-        for isa in isas:
-            entry = areas.get((area, isa))
-            if entry is None:
-                continue
-            if "error" in entry:
-                rows.append([str(area), isa, "ERROR: " + entry["error"]] + [""] * 5)
-                continue
-            partial = entry["partial_pixels"]
-            rows.append([
-                str(area), isa, si(partial, "/s"), si(entry["pixels"], "/s"),
-                si(entry["triangles"], "/s"), cv_cell(entry),
-                ratio(partial, reference.get("partial_pixels", 0))
-                if "error" not in reference else "-",
-                ratio(partial, AREA_TARGET) if isa == "avx2" else "-",
-            ])
-    print_table(header, rows)
+
+    def row(area, isa, entry, reference):
+        partial = entry["partial_pixels"]
+        return [
+            str(area), isa, si(partial, "/s"), si(entry["pixels"], "/s"),
+            si(entry["triangles"], "/s"), cv_cell(entry),
+            ratio(partial, reference.get("partial_pixels", 0)) if "error" not in reference else "-",
+            ratio(partial, AREA_TARGET) if isa == "avx2" else "-",
+        ]
+    print_table(header, rows_by_area(areas, len(header), row))
     print(f"target (AVX2, one core): {si(AREA_TARGET, '')} partially covered pixels/s")
 
 
