@@ -27,6 +27,14 @@ EDGEWISE_DEMO_PACKAGES=(
   libcli11-dev         # CLI11: every tool parses its command line with it
 )
 
+# tools/edgewise-atlas: the demo's build, the study program (timed with Google Benchmark) and
+# the charts.
+EDGEWISE_ATLAS_PACKAGES=(
+  "${EDGEWISE_DEMO_PACKAGES[@]}"
+  libbenchmark-dev   # Google Benchmark: the studies time their methods with the benchmarks' harness
+  python3-matplotlib # draws the atlas's charts (tools/atlas/plot_atlas.py)
+)
+
 # tools/check, stage by stage.
 EDGEWISE_CHECK_FORMAT_PACKAGES=(
   clang-format # the format stage's formatter (clang-format 14)
@@ -40,6 +48,7 @@ EDGEWISE_CHECK_HOST_PACKAGES=(
   libopengl-dev    # libOpenGL, their GL entry points (CMake's FindOpenGL needs it with EGL)
   libgl-dev        # GL/glcorearb.h, their GL declarations
   libgl1-mesa-dri  # Mesa's llvmpipe, which DrawPeer/ measures and tests/peer compares with
+  python3-matplotlib # the atlas's charts, drawn by its test from a short run
 )
 # The host build, then objdump and nm (binutils, from g++) read its objects.
 EDGEWISE_CHECK_ISA_OBJECTS_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")

@@ -1,0 +1,190 @@
+#!/usr/bin/python3
+"""Draw the method atlas: every study's charts (PNG and SVG) and one self-contained HTML page.
+
+Usage: /usr/bin/python3 tools/atlas/plot_atlas.py DIR [--summary]
+  DIR        the folder edgewise-atlas-study wrote: STUDY.csv (chart, series, x, y) and
+             STUDY.json (the study's title, the CPU, and per chart its title, axes, scales, kind
+             and a line of reading) for each study
+  --summary  also print, per chart, its title and reading (tools/edgewise-atlas prints them)
+
+Writes DIR/charts/<chart>.png and .svg, and DIR/index.html, which holds the SVG charts inline
+with their readings and the CPU, so it can be read without the other files. Needs matplotlib
+(Debian: python3-matplotlib). Exit status 1 for a missing or malformed input, 2 for a usage
+mistake.
+"""
+
+import argparse
+import csv
+import html
+import json
+import math
+import os
+import sys
+
+CSV_HEADER = ["chart", "series", "x", "y"]
+CHART_KEYS = {"id", "title", "x_label", "y_label", "x_log", "y_log", "kind", "reading"}
+MARKERS = ["o", "s", "^", "v", "D", "x", "P", "*"]
+
+
+class InputError(Exception):
+    pass
+
+
+def read_study(directory, json_name):
+    """The study's description and its points, grouped by chart then series."""
+    json_path = os.path.join(directory, json_name)
+    try:
+        with open(json_path) as file:
+            study = json.load(file)
+    except (OSError, json.JSONDecodeError) as error:
+        raise InputError(f"{json_path}: {error}") from None
+    for key in ("study", "title", "cpu", "charts"):
+        if key not in study:
+            raise InputError(f"{json_path}: no '{key}'")
+    for chart in study["charts"]:
+        if set(chart) != CHART_KEYS:
+            raise InputError(f"{json_path}: a chart has keys {sorted(chart)}")
+    csv_path = os.path.join(directory, study["study"] + ".csv")
+    points = {}
+    try:
+        with open(csv_path, newline="") as file:
+            reader = csv.reader(file)
+            if next(reader, None) != CSV_HEADER:
+                raise InputError(f"{csv_path}:1: expected the header {','.join(CSV_HEADER)}")
+            for number, fields in enumerate(reader, start=2):
+                if len(fields) != len(CSV_HEADER):
+                    raise InputError(f"{csv_path}:{number}: {len(fields)} fields, expected 4")
+                chart, series, x, y = fields
+                try:
+                    y = float(y)
+                except ValueError:
+                    raise InputError(f"{csv_path}:{number}: y is not a number") from None
+                points.setdefault(chart, {}).setdefault(series, []).append((x, y))
+    except OSError as error:
+        raise InputError(f"{csv_path}: {error}") from None
+    for chart in study["charts"]:
+        if chart["id"] not in points:
+            raise InputError(f"{csv_path}: no points for chart {chart['id']}")
+    return study, points
+
+
+def scale_y(axis, chart, values):
+    """A log axis where asked; symmetric log where the values include 0 (an exact method)."""
+    if not chart["y_log"]:
+        return
+    positive = [v for v in values if v > 0 and math.isfinite(v)]
+    if positive and len(positive) < len(values):
+        # Linear from 0 up to the smallest positive value, logarithmic above; the zeros sit on
+        # the bottom edge.
+        axis.set_yscale("symlog", linthresh=min(positive))
+        axis.set_ylim(0, max(positive) * 3)
+    elif positive:
+        axis.set_yscale("log")
+
+
+def draw_chart(plt, study, chart, series, path_stem):
+    figure, axis = plt.subplots(figsize=(7.5, 4.6))
+    values = [y for points in series.values() for _, y in points]
+    kind = chart["kind"]
+    if kind == "bar":
+        labels = [x for points in series.values() for x, _ in points]
+        heights = [y for points in series.values() for _, y in points]
+        bars = axis.bar(range(len(labels)), heights, color="#4477aa")
+        axis.set_xticks(range(len(labels)), labels, rotation=30, ha="right", fontsize=8)
+        axis.bar_label(bars, fmt="%.3g", fontsize=7)
+    else:
+        for index, (name, points) in enumerate(series.items()):
+            xs = [float(x) for x, _ in points]
+            ys = [y for _, y in points]
+            marker = MARKERS[index % len(MARKERS)]
+            if kind == "scatter":
+                axis.scatter(xs, ys, marker=marker, label=name, clip_on=False, zorder=3)
+            else:
+                axis.plot(xs, ys, marker=marker, label=name, clip_on=False)
+        axis.legend(fontsize=8)
+        if chart["x_log"]:
+            axis.set_xscale("log", base=2 if kind == "line" else 10)
+    scale_y(axis, chart, values)
+    axis.set_xlabel(chart["x_label"])
+    axis.set_ylabel(chart["y_label"])
+    axis.set_title(chart["title"], fontsize=11)
+    figure.text(0.99, 0.01, study["cpu"], ha="right", va="bottom", fontsize=7, color="#555555")
+    axis.grid(True, which="major", alpha=0.3)
+    figure.tight_layout(rect=(0, 0.03, 1, 1))
+    for extension in ("png", "svg"):
+        figure.savefig(f"{path_stem}.{extension}", dpi=110)
+    plt.close(figure)
+
+
+def inline_svg(path):
+    with open(path) as file:
+        text = file.read()
+    start = text.find("<svg")
+    return text[start:] if start >= 0 else text
+
+
+def write_page(directory, studies):
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8"><title>edgewise method atlas</title>',
+        "<style>body{font-family:sans-serif;max-width:60em;margin:2em auto;padding:0 1em}"
+        "figure{margin:2em 0}figcaption{max-width:50em}svg{max-width:100%;height:auto}"
+        ".cpu{color:#555}</style></head><body>",
+        "<h1>edgewise method atlas</h1>",
+        "<p>Every method's error against ground truth and its time, measured by the library's "
+        "own code paths; each chart names the CPU it was measured on. The numbers are in the "
+        "CSV file of each study, beside this page.</p>",
+    ]
+    for study, points in studies:
+        parts.append(f"<h2>{html.escape(study['title'])}</h2>")
+        parts.append(
+            f'<p class="cpu">Measured on {html.escape(study["cpu"])}. Numbers: '
+            f'<a href="{html.escape(study["study"])}.csv">{html.escape(study["study"])}.csv</a>.</p>'
+        )
+        for chart in study["charts"]:
+            svg = inline_svg(os.path.join(directory, "charts", chart["id"] + ".svg"))
+            parts.append(f'<figure id="{html.escape(chart["id"])}">{svg}')
+            parts.append(f"<figcaption>{html.escape(chart['reading'])}</figcaption></figure>")
+    parts.append("</body></html>")
+    with open(os.path.join(directory, "index.html"), "w") as file:
+        file.write("\n".join(parts) + "\n")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("directory")
+    parser.add_argument("--summary", action="store_true")
+    arguments = parser.parse_args()
+    try:
+        names = sorted(n for n in os.listdir(arguments.directory) if n.endswith(".json"))
+    except OSError as error:
+        print(f"plot_atlas.py: {error}", file=sys.stderr)
+        return 1
+    if not names:
+        print(f"plot_atlas.py: no study (*.json) in {arguments.directory}", file=sys.stderr)
+        return 1
+    try:
+        studies = [read_study(arguments.directory, name) for name in names]
+    except InputError as error:
+        print(f"plot_atlas.py: {error}", file=sys.stderr)
+        return 1
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.rcParams["svg.fonttype"] = "none"  # text stays text in the page
+    charts_dir = os.path.join(arguments.directory, "charts")
+    os.makedirs(charts_dir, exist_ok=True)
+    for study, points in studies:
+        for chart in study["charts"]:
+            draw_chart(plt, study, chart, points[chart["id"]], os.path.join(charts_dir, chart["id"]))
+            if arguments.summary:
+                print(f"{chart['title']}: {chart['reading']}")
+    write_page(arguments.directory, studies)
+    print(f"page: {os.path.join(arguments.directory, 'index.html')}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,59 @@
+// edgewise-atlas-study: one study of the method atlas (tools/edgewise-atlas): measures each
+// method of a family for its error against ground truth and its time (Google Benchmark,
+// medians), and writes <out>/<study>.csv and <out>/<study>.json for tools/atlas/plot_atlas.py.
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "atlas/coverage_study.hpp"
+#include "atlas/cpu_name.hpp"
+#include "common/run_tool.hpp"
+#include "common/usage_error.hpp"
+
+namespace {
+
+using namespace edgewise;
+
+constexpr const char* kDescription =
+    "Runs one study of the method atlas and writes its numbers (STUDY.csv: chart, series, x, y)\n"
+    "and its charts' descriptions (STUDY.json) into the output folder. Studies:\n"
+    "  coverage  the exact fixed-point rasterizer against float64 and float32 edge functions:\n"
+    "            pixels decided differently and watertightness failures against coordinate\n"
+    "            magnitude, sliver aspect ratio and triangle size; time per triangle.\n"
+    "Times are Google Benchmark medians of --repetitions runs.";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Google Benchmark reads its own flags; the atlas passes none.
+  int benchmark_argc = 1;
+  benchmark::Initialize(&benchmark_argc, argv);
+  std::string study, out_dir = "atlas";
+  bool quick = false;
+  int repetitions = 5;
+  return tools::run_tool(
+      argc, argv, "edgewise-atlas-study", {"STUDY [-o DIR] [--quick] [--repetitions N]"},
+      [&](CLI::App& app) -> tools::ToolWork {
+        app.description(kDescription);
+        app.add_option("study", study, "the study: coverage")->required();
+        app.add_option("-o,--out", out_dir, "output folder (made if missing; default atlas)");
+        app.add_flag("--quick", quick, "a short run with few cases, for testing the tool");
+        app.add_option("--repetitions", repetitions, "timed repetitions per method (default 5)")
+            ->check(CLI::Range(2, 100));
+        return [&]() {
+          if (study != "coverage") throw tools::UsageError("unknown study '" + study + "'");
+          std::filesystem::create_directories(out_dir);
+          atlas::CoverageStudySettings settings;
+          settings.quick = quick;
+          settings.timer.repetitions = repetitions;
+          if (quick) settings.timer.min_seconds = 0.01;
+          const atlas::StudyOutput output = atlas::coverage_study(settings, atlas::cpu_name());
+          output.write(out_dir);
+          std::cout << "wrote " << (std::filesystem::path(out_dir) / (study + ".csv")).string()
+                    << " and " << study << ".json\n";
+          return 0;
+        };
+      });
+}
