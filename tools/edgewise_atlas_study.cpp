@@ -3,12 +3,14 @@
 // medians), and writes <out>/<study>.csv and <out>/<study>.json for tools/atlas/plot_atlas.py.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include <benchmark/benchmark.h>
 
 #include "atlas/coverage_study.hpp"
 #include "atlas/cpu_name.hpp"
+#include "atlas/interpolation_study.hpp"
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
 
@@ -22,6 +24,9 @@ constexpr const char* kDescription =
     "  coverage  the exact fixed-point rasterizer against float64 and float32 edge functions:\n"
     "            pixels decided differently and watertightness failures against coordinate\n"
     "            magnitude, sliver aspect ratio and triangle size; time per triangle.\n"
+    "  interpolation  every interpolation method of draw() against the exact perspective-correct\n"
+    "            value: error and time per fragment on every ISA, affine weights by depth range,\n"
+    "            each method on slivers.\n"
     "Times are Google Benchmark medians of --repetitions runs.";
 
 }  // namespace
@@ -37,19 +42,26 @@ int main(int argc, char** argv) {
       argc, argv, "edgewise-atlas-study", {"STUDY [-o DIR] [--quick] [--repetitions N]"},
       [&](CLI::App& app) -> tools::ToolWork {
         app.description(kDescription);
-        app.add_option("study", study, "the study: coverage")->required();
+        app.add_option("study", study, "the study: coverage or interpolation")->required();
         app.add_option("-o,--out", out_dir, "output folder (made if missing; default atlas)");
         app.add_flag("--quick", quick, "a short run with few cases, for testing the tool");
         app.add_option("--repetitions", repetitions, "timed repetitions per method (default 5)")
             ->check(CLI::Range(2, 100));
         return [&]() {
-          if (study != "coverage") throw tools::UsageError("unknown study '" + study + "'");
+          atlas::TimerSettings timer;
+          timer.repetitions = repetitions;
+          if (quick) timer.min_seconds = 0.01;
+          const std::string cpu = atlas::cpu_name();
+          std::optional<atlas::StudyOutput> result;
+          if (study == "coverage") {
+            result = atlas::coverage_study({quick, timer}, cpu);
+          } else if (study == "interpolation") {
+            result = atlas::interpolation_study({quick, timer}, cpu);
+          } else {
+            throw tools::UsageError("unknown study '" + study + "'");
+          }
           std::filesystem::create_directories(out_dir);
-          atlas::CoverageStudySettings settings;
-          settings.quick = quick;
-          settings.timer.repetitions = repetitions;
-          if (quick) settings.timer.min_seconds = 0.01;
-          const atlas::StudyOutput output = atlas::coverage_study(settings, atlas::cpu_name());
+          const atlas::StudyOutput& output = *result;
           output.write(out_dir);
           std::cout << "wrote " << (std::filesystem::path(out_dir) / (study + ".csv")).string()
                     << " and " << study << ".json\n";
