@@ -16,6 +16,7 @@
 
 #include <xsimd/xsimd.hpp>
 
+#include "../src/level_of_detail.hpp"
 #include "fast_log2-inl.hpp"
 #include "texel_fetch-inl.hpp"
 #include "texel_pairs-inl.hpp"
@@ -58,7 +59,10 @@ class TextureFilters {
   using Ints = xsimd::batch<std::int32_t, Arch>;
 
   TextureFilters(const detail::TextureDescription& texture, const SamplerOptions& options)
-      : texture_(texture), options_(options), level0_(level_lanes<Arch>(texture.mips, 0)) {}
+      : texture_(texture),
+        options_(options),
+        level0_(level_lanes<Arch>(texture.mips, 0)),
+        lod_offset_(static_cast<float>(double{options.lod_bias} - kBoxPyramidLodOffset)) {}
 
   [[gnu::always_inline]] Rgba<Arch> nearest(Floats s, Floats t) const {
     const Floats u = reduce_coordinate<Arch>(s, options_.wrap_s) * level0_.widthf;
@@ -124,7 +128,8 @@ class TextureFilters {
     return sum;
   }
 
-  // lambda = log2(rho) + bias (sample.hpp); +inf where a derivative is not finite.
+  // lambda = log2(rho) - log2(3) / 2 + bias (level_of_detail.hpp); +inf where a derivative is
+  // not finite.
   [[gnu::always_inline]] Floats level_of_detail(const QueryLanes<Arch>& q) const {
     const Floats ux = q.dsdx * Floats(texture_.width), vx = q.dtdx * Floats(texture_.height);
     const Floats uy = q.dsdy * Floats(texture_.width), vy = q.dtdy * Floats(texture_.height);
@@ -138,7 +143,7 @@ class TextureFilters {
                                     xsimd::max(xsimd::abs(uy), xsimd::abs(vy)));
       lambda = fast_log2<Arch>(rho);
     }
-    return lambda + Floats(options_.lod_bias);
+    return lambda + Floats(lod_offset_);
   }
 
   // lambda clamped to [0, levels - 1]; NaN is not expected (level_of_detail() gives +inf).
@@ -520,6 +525,7 @@ class TextureFilters {
   const detail::TextureDescription& texture_;
   const SamplerOptions& options_;
   LevelLanes<Arch> level0_;
+  float lod_offset_;  // lod_bias - log2(3) / 2 (level_of_detail.hpp), rounded once, per call
 };
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

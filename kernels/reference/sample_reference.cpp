@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "../src/level_of_detail.hpp"
+
 namespace edgewise::reference {
 namespace {
 
@@ -361,7 +363,7 @@ double level_of_detail(const Texture& texture, const SamplerOptions& options,
       options.lod == LodFormula::exact
           ? std::max(std::hypot(d.ux, d.vx), std::hypot(d.uy, d.vy))
           : std::max({std::abs(d.ux), std::abs(d.vx), std::abs(d.uy), std::abs(d.vy)});
-  const double lambda = std::log2(rho) + double{options.lod_bias};
+  const double lambda = std::log2(rho) - kBoxPyramidLodOffset + double{options.lod_bias};
   return std::isnan(lambda) ? kInfinity : lambda;
 }
 

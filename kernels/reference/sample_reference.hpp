@@ -76,7 +76,8 @@ Rgba bicubic(const Texture& texture, const TextureLevel& level, WrapMode wrap_s,
 
 // --- Level of detail and the mip filters -------------------------------------------------------
 
-// lambda = log2(rho) + lod_bias before clamping (rho by options.lod): -inf for zero derivatives,
+// lambda = log2(rho) - log2(3) / 2 + lod_bias before clamping (rho by options.lod; the offset
+// from kernels/src/level_of_detail.hpp): -inf for zero derivatives,
 // +inf for a non-finite derivative or a NaN lambda.
 double level_of_detail(const Texture& texture, const SamplerOptions& options,
                        const TextureQuery& query);

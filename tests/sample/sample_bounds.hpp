@@ -9,7 +9,10 @@
 //   weights; for the cubics, half the largest sum of |w_i'(f)| times the other axis's largest
 //   sum of |w_i| (Catmull-Rom: 3.78 / 2 and 1.25; B-spline: 2.34 / 2 and 1).
 // - level of detail: lambda is off by at most 2^-19 (|lambda| + 1) (fast_log2-inl.hpp's 2^-20
-//   plus the roundings of the squared lengths and the bias); where lambda is not clamped on both
+//   plus the roundings of the squared lengths and the bias; mip_nearest and trilinear fold
+//   lod_bias - log2(3) / 2 into one float, whose rounding, 2^-24 |lod_bias - 0.79| < 2^-17 for
+//   |lod_bias| < 64, is within the slack of fast_log2's 2^-20, a bound on a truncation below
+//   1e-9 plus a few ulps); where lambda is not clamped on both
 //   sides |lambda| < 64, so 2^-13 bounds it. A blend between levels moves by at most that times R
 //   (twice for the ripmap's two axes).
 // - rounding: weights, products and sums in float add at most (64 + taps^2 + probes) 2^-24 times

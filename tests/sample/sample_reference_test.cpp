@@ -7,6 +7,7 @@
 // magnitude of its result).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -491,25 +492,32 @@ TEST(SampleReference, LevelOfDetailFormulas) {
   SamplerOptions exact, max_axis;
   exact.lod = LodFormula::exact;
   max_axis.lod = LodFormula::max_axis;
+  // lambda = log2(rho) - c, c = log2(3) / 2 (the box pyramid's level of equal variance,
+  // kernels/src/level_of_detail.hpp). Where log2(rho) is exact the subtraction rounds once.
+  const double c = std::log2(3.0) / 2;
   // A footprint rotated 45 degrees: axes (4, 4) and (-4, 4) texels. rho = 4 sqrt(2) (exact) or
-  // 4 (max_axis): lambda 2.5 and 2, a ratio of sqrt(2) in rho. hypot and log2 round once each:
-  // |error| <= 2.5 * 2u + u / ln 2 < 8 u.
+  // 4 (max_axis): log2(rho) 2.5 and 2, a ratio of sqrt(2) in rho. hypot, log2 and the
+  // subtraction round once each: |error| <= 2.5 * 2u + u / ln 2 + 2.5 u < 10 u.
   const TextureQuery rotated{0.5f, 0.5f, 0.0625f, 0.0625f, -0.0625f, 0.0625f};
-  EXPECT_NEAR(reference::level_of_detail(texture, exact, rotated), 2.5, 8 * kU);
-  EXPECT_EQ(reference::level_of_detail(texture, max_axis, rotated), 2.0);
+  EXPECT_NEAR(reference::level_of_detail(texture, exact, rotated), 2.5 - c, 10 * kU);
+  EXPECT_NEAR(reference::level_of_detail(texture, max_axis, rotated), 2.0 - c, 2 * kU);
   // Axis-aligned 8 x 2 texels: both formulas give log2(8) = 3.
   const TextureQuery aligned{0.5f, 0.5f, 0.125f, 0, 0, 2.0f / 64};
-  EXPECT_EQ(reference::level_of_detail(texture, exact, aligned), 3.0);
-  EXPECT_EQ(reference::level_of_detail(texture, max_axis, aligned), 3.0);
+  EXPECT_NEAR(reference::level_of_detail(texture, exact, aligned), 3.0 - c, 4 * kU);
+  EXPECT_NEAR(reference::level_of_detail(texture, max_axis, aligned), 3.0 - c, 4 * kU);
   // Axes (1, 0) and (-6, 2): max_axis takes |uy| = 6, exact hypot(6, 2) = sqrt(40).
   const TextureQuery skewed{0.5f, 0.5f, 1.0f / 64, 0, -6.0f / 64, 2.0f / 64};
-  EXPECT_NEAR(reference::level_of_detail(texture, exact, skewed), std::log2(40.0) / 2, 8 * kU);
-  EXPECT_NEAR(reference::level_of_detail(texture, max_axis, skewed), std::log2(6.0), 8 * kU);
+  EXPECT_NEAR(reference::level_of_detail(texture, exact, skewed), std::log2(40.0) / 2 - c, 10 * kU);
+  EXPECT_NEAR(reference::level_of_detail(texture, max_axis, skewed), std::log2(6.0) - c, 10 * kU);
+  // A footprint of sqrt(3) texels is the edge of magnification: lambda 0.
+  const double root3 = std::sqrt(3.0) / 64;
+  const TextureQuery edge{0.5f, 0.5f, static_cast<float>(root3), 0, 0, static_cast<float>(root3)};
+  EXPECT_NEAR(reference::level_of_detail(texture, exact, edge), 0.0, 0x1p-22);  // float rho
   // The bias adds.
   max_axis.lod_bias = 0.25f;
-  EXPECT_EQ(reference::level_of_detail(texture, max_axis, rotated), 2.25);
+  EXPECT_NEAR(reference::level_of_detail(texture, max_axis, rotated), 2.25 - c, 4 * kU);
   max_axis.lod_bias = -3.0f;
-  EXPECT_EQ(reference::level_of_detail(texture, max_axis, aligned), 0.0);
+  EXPECT_NEAR(reference::level_of_detail(texture, max_axis, aligned), -c, 4 * kU);
 
   // Zero derivatives magnify (-inf, level 0); a non-finite one selects the coarsest level.
   const TextureQuery zero{0.3f, 0.7f, 0, 0, 0, 0};
@@ -557,8 +565,8 @@ TEST(SampleReference, MipNearestRoundsHalfDown) {
   EXPECT_EQ(reference::mip_nearest_level(texture, 40.0), 4);
   EXPECT_EQ(reference::mip_nearest_level(texture, std::numeric_limits<double>::infinity()), 4);
 
-  // Through sample(): rho = 2 texels (lambda 1) plus a bias of 0.5 is exactly 1.5: level 1;
-  // minus 0.5 is 0.5: level 0.
+  // Through sample(): rho = 2 texels (lambda 1 - log2(3) / 2 = 0.21) plus a bias of 0.5 is 0.71:
+  // level 1; minus 0.5 is -0.29: level 0.
   const TextureQuery q{0.3f, 0.6f, 2.0f / 16, 0, 0, 1.0f / 16};
   for (float bias : {0.5f, -0.5f}) {
     SamplerOptions options =
@@ -587,16 +595,19 @@ TEST(SampleReference, TrilinearBlendsNeighbouringLevels) {
     expected[c] = 0.75 * b1[c] + 0.25 * b2[c];
   expect_rgba_near(reference::trilinear(texture, wrap, wrap, s, t, 1.25), expected, 4 * kU);
 
-  // Through sample(): rho = 2 texels, bias 0.25.
+  // Through sample(): rho = 4 texels, bias 0.25: lambda = 2 - log2(3) / 2 + 0.25 = 1.46, levels 1
+  // and 2. f is computed as the reference does (two roundings apart from the exact value at
+  // most, which moves each product by 2 u more): within 8 u.
   SamplerOptions options = options_for(TextureFilter::trilinear, wrap, wrap);
   options.lod_bias = 0.25f;
-  const TextureQuery q{0.43f, 0.71f, 2.0f / 16, 0, 0, 1.0f / 16};
+  const TextureQuery q{0.43f, 0.71f, 4.0f / 16, 0, 0, 1.0f / 16};
+  const double f = 2 - std::log2(3.0) / 2 + 0.25 - 1;
   Rgba via_sample_expected;
   const Rgba q1 = reference::bilinear(texture, levels[1], wrap, wrap, q.s, q.t);
   const Rgba q2 = reference::bilinear(texture, levels[2], wrap, wrap, q.s, q.t);
   for (int c = 0; c < 4; ++c)
-    via_sample_expected[c] = 0.75 * q1[c] + 0.25 * q2[c];
-  expect_rgba_near(reference::sample(texture, options, q), via_sample_expected, 4 * kU);
+    via_sample_expected[c] = (1 - f) * q1[c] + f * q2[c];
+  expect_rgba_near(reference::sample(texture, options, q), via_sample_expected, 8 * kU);
 
   // Integer lambda reads one level; at and beyond the last level only the 1 x 1 level.
   expect_rgba_eq(reference::trilinear(texture, wrap, wrap, s, t, 2.0), bilinear(2));
@@ -1100,16 +1111,21 @@ TEST(SampleReference, AnisotropicProbeCounts) {
 }
 
 TEST(SampleReference, IsotropicAnisotropicIsTrilinear) {
-  // One probe at offset 0 with weight 1: the trilinear value, bit for bit.
+  // One probe at offset 0 with weight 1: the trilinear value, bit for bit, at the probe's own
+  // lambda = log2(Pmax / N): the probes' level follows their spacing, without the isotropic
+  // filters' variance offset (kernels/src/level_of_detail.hpp).
   const Texture texture = random_float_texture(32, 32, 82);
+  const auto probe_lambda = [](const TextureQuery& q) {
+    return std::log2(std::max(std::hypot(double{q.dsdx} * 32, double{q.dtdx} * 32),
+                              std::hypot(double{q.dsdy} * 32, double{q.dtdy} * 32)));
+  };
   for (WrapMode wrap : kWraps) {
     for (const TextureQuery& q :
          {TextureQuery{0.4f, 0.3f, 2.0f / 32, 0, 0, 2.0f / 32},
           TextureQuery{0.7f, 0.1f, 3.0f / 32, 4.0f / 32, -4.0f / 32, 3.0f / 32}}) {
       const SamplerOptions options = options_for(TextureFilter::anisotropic, wrap, wrap);
       expect_rgba_eq(reference::sample(texture, options, q),
-                     reference::trilinear(texture, wrap, wrap, q.s, q.t,
-                                          reference::level_of_detail(texture, options, q)),
+                     reference::trilinear(texture, wrap, wrap, q.s, q.t, probe_lambda(q)),
                      describe(q));
     }
   }

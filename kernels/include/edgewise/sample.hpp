@@ -3,10 +3,13 @@
 //
 // Footprint and level of detail. With W x H the size of level 0, the derivatives in texels are
 //   ux = dsdx W, vx = dtdx H, uy = dsdy W, vy = dtdy H,
-// and the level of detail is lambda = log2(rho) + lod_bias, with
+// and the level of detail of mip_nearest and trilinear is lambda = log2(rho) - log2(3) / 2 +
+// lod_bias, with
 //   LodFormula::exact:    rho = max(sqrt(ux^2 + vx^2), sqrt(uy^2 + vy^2))
 //   LodFormula::max_axis: rho = max(|ux|, |vx|, |uy|, |vy|)   (cheaper; up to sqrt(2) lower)
-// lambda <= 0 magnifies (level 0); mip filters clamp lambda to [0, levels - 1].
+// The level 2^lambda texels wide, read bilinearly, blurs as much as a box of width rho (equal
+// variances, kernels/src/level_of_detail.hpp). lambda <= 0 (rho <= sqrt(3) texels) magnifies
+// (level 0); mip filters clamp lambda to [0, levels - 1].
 //
 // The filters (all results linear RGBA, 8-bit textures decoded first):
 //   nearest                the texel containing (s, t) in level 0
@@ -27,7 +30,8 @@
 //                          axis-aligned bounding box (at least one texel on each axis)
 //   anisotropic            GPU-style: N = min(ceil(Pmax / Pmin), max_anisotropy) trilinear probes
 //                          spread evenly along the major axis (P = the two axis lengths), lambda
-//                          from Pmax / N
+//                          = log2(Pmax / N) + lod_bias: no variance offset, the probes' spacing
+//                          sets their level
 //   ewa                    elliptical weighted average (Heckbert): texels inside the footprint
 //                          ellipse (widened by the unit reconstruction disk) weighted by a
 //                          Gaussian table (128 entries generated at start-up, interpolated);
