@@ -10,6 +10,7 @@
 
 #include "atlas/coverage_study.hpp"
 #include "atlas/cpu_name.hpp"
+#include "atlas/depth_study.hpp"
 #include "atlas/interpolation_study.hpp"
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
@@ -27,6 +28,8 @@ constexpr const char* kDescription =
     "  interpolation  every interpolation method of draw() against the exact perspective-correct\n"
     "            value: error and time per fragment on every ISA, affine weights by depth range,\n"
     "            each method on slivers.\n"
+    "  depth     the smallest separation of two surfaces that z/w, reversed z/w and a linear\n"
+    "            depth resolve, by distance and far/near ratio; why interpolate z, in images.\n"
     "Times are Google Benchmark medians of --repetitions runs.";
 
 }  // namespace
@@ -42,7 +45,7 @@ int main(int argc, char** argv) {
       argc, argv, "edgewise-atlas-study", {"STUDY [-o DIR] [--quick] [--repetitions N]"},
       [&](CLI::App& app) -> tools::ToolWork {
         app.description(kDescription);
-        app.add_option("study", study, "the study: coverage or interpolation")->required();
+        app.add_option("study", study, "the study: coverage, interpolation or depth")->required();
         app.add_option("-o,--out", out_dir, "output folder (made if missing; default atlas)");
         app.add_flag("--quick", quick, "a short run with few cases, for testing the tool");
         app.add_option("--repetitions", repetitions, "timed repetitions per method (default 5)")
@@ -57,6 +60,9 @@ int main(int argc, char** argv) {
             result = atlas::coverage_study({quick, timer}, cpu);
           } else if (study == "interpolation") {
             result = atlas::interpolation_study({quick, timer}, cpu);
+          } else if (study == "depth") {
+            std::filesystem::create_directories(out_dir);
+            result = atlas::depth_study({quick}, cpu, out_dir);
           } else {
             throw tools::UsageError("unknown study '" + study + "'");
           }

@@ -86,6 +86,10 @@ def draw_chart(plt, study, chart, series, path_stem):
     figure, axis = plt.subplots(figsize=(7.5, 4.6))
     values = [y for points in series.values() for _, y in points]
     kind = chart["kind"]
+    if kind == "images":
+        plt.close(figure)
+        draw_images(plt, study, chart, series, path_stem)
+        return
     if kind == "bar":
         labels = [x for points in series.values() for x, _ in points]
         heights = [y for points in series.values() for _, y in points]
@@ -111,6 +115,26 @@ def draw_chart(plt, study, chart, series, path_stem):
     figure.text(0.99, 0.01, study["cpu"], ha="right", va="bottom", fontsize=7, color="#555555")
     axis.grid(True, which="major", alpha=0.3)
     figure.tight_layout(rect=(0, 0.03, 1, 1))
+    for extension in ("png", "svg"):
+        figure.savefig(f"{path_stem}.{extension}", dpi=110)
+    plt.close(figure)
+
+
+def draw_images(plt, study, chart, series, path_stem):
+    """The study's images side by side, each under its caption (the series)."""
+    directory = os.path.dirname(os.path.dirname(path_stem))
+    figure, axes = plt.subplots(1, len(series), figsize=(4 * len(series), 4.4), squeeze=False)
+    for axis, (caption, points) in zip(axes[0], series.items()):
+        path = os.path.join(directory, points[0][0])
+        try:
+            image = plt.imread(path)
+        except (OSError, ValueError) as error:
+            raise InputError(f"{path}: {error}") from None
+        axis.imshow(image, interpolation="nearest")
+        axis.set_title(caption, fontsize=10)
+        axis.set_axis_off()
+    figure.suptitle(chart["title"], fontsize=11)
+    figure.text(0.99, 0.01, study["cpu"], ha="right", va="bottom", fontsize=7, color="#555555")
     for extension in ("png", "svg"):
         figure.savefig(f"{path_stem}.{extension}", dpi=110)
     plt.close(figure)
@@ -176,11 +200,16 @@ def main():
     plt.rcParams["svg.fonttype"] = "none"  # text stays text in the page
     charts_dir = os.path.join(arguments.directory, "charts")
     os.makedirs(charts_dir, exist_ok=True)
-    for study, points in studies:
-        for chart in study["charts"]:
-            draw_chart(plt, study, chart, points[chart["id"]], os.path.join(charts_dir, chart["id"]))
-            if arguments.summary:
-                print(f"{chart['title']}: {chart['reading']}")
+    try:
+        for study, points in studies:
+            for chart in study["charts"]:
+                stem = os.path.join(charts_dir, chart["id"])
+                draw_chart(plt, study, chart, points[chart["id"]], stem)
+                if arguments.summary:
+                    print(f"{chart['title']}: {chart['reading']}")
+    except InputError as error:
+        print(f"plot_atlas.py: {error}", file=sys.stderr)
+        return 1
     write_page(arguments.directory, studies)
     print(f"page: {os.path.join(arguments.directory, 'index.html')}")
     return 0

@@ -34,6 +34,8 @@ std::string_view kind_name(ChartKind kind) {
       return "bar";
     case ChartKind::scatter:
       return "scatter";
+    case ChartKind::images:
+      return "images";
     case ChartKind::line:
       break;
   }

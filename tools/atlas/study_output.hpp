@@ -10,7 +10,8 @@
 
 namespace edgewise::atlas {
 
-enum class ChartKind { line, bar, scatter };
+// images: each point's x names an image file of the output folder, its series the caption.
+enum class ChartKind { line, bar, scatter, images };
 
 struct Chart {
   std::string id;  // file name stem of the chart: letters, digits and '-'
