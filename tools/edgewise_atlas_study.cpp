@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <benchmark/benchmark.h>
@@ -13,6 +14,9 @@
 #include "atlas/cpu_name.hpp"
 #include "atlas/depth_study.hpp"
 #include "atlas/interpolation_study.hpp"
+#if EDGEWISE_ATLAS_TEXTURE
+#include "atlas/texture_study.hpp"
+#endif
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
 
@@ -31,6 +35,9 @@ constexpr const char* kDescription =
     "            each method on slivers.\n"
     "  depth     the smallest separation of two surfaces that z/w, reversed z/w and a linear\n"
     "            depth resolve, by distance and far/near ratio; why interpolate z, in images.\n"
+    "  texture   every filter and OpenImageIO's TextureSystem against ground truth on the\n"
+    "            checkerboard ground plane (error against time), each filter by anisotropy,\n"
+    "            float32 summed-area sums by texture size (needs OpenImageIO).\n"
     "  aa        each coverage mode (pixel centre, 2 to 16 samples, exact area) against the\n"
     "            exact area: error at edge pixels and on a Siemens star, time per triangle.\n"
     "Times are Google Benchmark medians of --repetitions runs.";
@@ -48,7 +55,7 @@ int main(int argc, char** argv) {
       argc, argv, "edgewise-atlas-study", {"STUDY [-o DIR] [--quick] [--repetitions N]"},
       [&](CLI::App& app) -> tools::ToolWork {
         app.description(kDescription);
-        app.add_option("study", study, "the study: coverage, interpolation, depth or aa")
+        app.add_option("study", study, "the study: coverage, interpolation, depth, texture or aa")
             ->required();
         app.add_option("-o,--out", out_dir, "output folder (made if missing; default atlas)");
         app.add_flag("--quick", quick, "a short run with few cases, for testing the tool");
@@ -64,6 +71,12 @@ int main(int argc, char** argv) {
             result = atlas::coverage_study({quick, timer}, cpu);
           } else if (study == "interpolation") {
             result = atlas::interpolation_study({quick, timer}, cpu);
+          } else if (study == "texture") {
+#if EDGEWISE_ATLAS_TEXTURE
+            result = atlas::texture_study({quick, timer}, cpu);
+#else
+            throw std::runtime_error("the texture study needs OpenImageIO, not found at build");
+#endif
           } else if (study == "aa") {
             result = atlas::aa_study({quick, timer}, cpu);
           } else if (study == "depth") {
