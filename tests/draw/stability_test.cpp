@@ -11,10 +11,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 #include <vector>
 
 #include "edgewise/edgewise.hpp"
+#include "draw_probes.hpp"
 #include "random.hpp"
 #include "src/affine_error_bound.hpp"
 
@@ -23,22 +23,12 @@ namespace {
 
 constexpr int kSize = 256;
 
-// Clip space from (x, y, w): w' = w, depth 1/2 everywhere (the tests draw without a depth test).
-Mat4 clip_from_xyw() {
-  Mat4 m{};
-  m.m[0][0] = 1.0f;
-  m.m[1][1] = 1.0f;
-  m.m[2][2] = 0.5f;
-  m.m[3][2] = 1.0f;
-  return m;
-}
-
 std::vector<std::uint8_t> draw_rgba(const std::vector<Vec3>& positions,
                                     const std::vector<Vec4>& colours, Perspective perspective) {
   Framebuffer target(kSize, kSize);
   target.clear({0, 0, 0, 0}, 1.0f);
   DrawOptions options;
-  options.transform = clip_from_xyw();
+  options.transform = probes::clip_from_xyw();
   options.depth_test = DepthTest::always;
   options.perspective = perspective;
   options.threads = 1;
@@ -115,38 +105,8 @@ TEST(Stability, AffineSafeDepthRangeForOneCode) {
   EXPECT_EQ(detail::affine_safe_depth_ratio(2.0, 1.0), INFINITY);
 }
 
-// Whether the nearer of two planes facing the camera, drawn second, wins at every pixel.
 bool resolved(bool reverse, float near, float far, float near_plane, float far_plane) {
-  constexpr float kFovy = std::numbers::pi_v<float> / 3.0f;
-  Framebuffer target(32, 32);
-  target.clear({0, 0, 0, 1}, reverse ? 0.0f : 1.0f);
-  DrawOptions options;
-  Mat4 projection = perspective(kFovy, 1.0f, near, far);
-  if (reverse) {
-    for (int c = 0; c < 4; ++c)
-      projection.m[2][c] = projection.m[3][c] - projection.m[2][c];
-  }
-  options.transform = projection;
-  options.depth_test = reverse ? DepthTest::greater : DepthTest::less;
-  options.threads = 1;
-  for (const float distance : {far_plane, near_plane}) {
-    const float half = 2.0f * distance * std::tan(kFovy / 2.0f);
-    const std::vector<Vec3> positions = {{-half, -half, -distance}, {half, -half, -distance},
-                                         {half, half, -distance},   {-half, -half, -distance},
-                                         {half, half, -distance},   {-half, half, -distance}};
-    const Vec4 colour = distance == near_plane ? Vec4{0, 1, 0, 1} : Vec4{1, 0, 0, 1};
-    const std::vector<Vec4> colours(positions.size(), colour);
-    DrawMesh mesh;
-    mesh.positions = positions;
-    mesh.colors = colours;
-    draw(target, mesh, options);
-  }
-  for (int y = 0; y < 32; ++y) {
-    for (int x = 0; x < 32; ++x) {
-      if ((target.color(x, y) & 0xFFFFu) != 0xFF00u) return false;
-    }
-  }
-  return true;
+  return probes::nearer_plane_wins(reverse, near, far, near_plane, far_plane, 32);
 }
 
 TEST(Stability, DepthResolutionAtHalfTheFarDistance) {

@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "draw_probes.hpp"
 #include "edgewise/edgewise.hpp"
 
 namespace edgewise::atlas {
 namespace {
 
 constexpr int kSize = 64;  // the target of the separation tests, square
-constexpr float kFovy = std::numbers::pi_v<float> / 3.0f;
 
 enum class Encoding { standard, reversed, linear };
 
@@ -33,21 +33,6 @@ const char* name_of(Encoding encoding) {
   return "z/w (less, cleared to 1)";
 }
 
-// perspective() with z' = w - z: z'/w = 1 - z/w, 1 at the near plane and 0 at the far one.
-Mat4 reversed(Mat4 m) {
-  for (int c = 0; c < 4; ++c)
-    m.m[2][c] = m.m[3][c] - m.m[2][c];
-  return m;
-}
-
-// A square facing the camera at view distance `distance`, wider than the view: two triangles.
-void add_plane(float distance, std::vector<Vec3>& positions) {
-  const float half = 2.0f * distance * std::tan(kFovy / 2.0f);
-  const Vec3 a{-half, -half, -distance}, b{half, -half, -distance}, c{half, half, -distance},
-      d{-half, half, -distance};
-  positions.insert(positions.end(), {a, b, c, a, c, d});
-}
-
 // Whether the nearer of two planes, at `near_plane` and `far_plane`, wins at every pixel when
 // the farther one is drawn first.
 bool resolved(Encoding encoding, float near, float far, double near_plane, double far_plane) {
@@ -55,30 +40,9 @@ bool resolved(Encoding encoding, float near, float far, double near_plane, doubl
     const auto stored = [&](double d) { return static_cast<float>((d - near) / (far - near)); };
     return stored(near_plane) < stored(far_plane);
   }
-  Framebuffer target(kSize, kSize);
-  const bool reverse = encoding == Encoding::reversed;
-  target.clear({0.0f, 0.0f, 0.0f, 1.0f}, reverse ? 0.0f : 1.0f);
-  DrawOptions options;
-  const Mat4 projection = perspective(kFovy, 1.0f, near, far);
-  options.transform = reverse ? reversed(projection) : projection;
-  options.depth_test = reverse ? DepthTest::greater : DepthTest::less;
-  options.threads = 1;
-  for (const double distance : {far_plane, near_plane}) {
-    std::vector<Vec3> positions;
-    add_plane(static_cast<float>(distance), positions);
-    const Vec4 colour = distance == near_plane ? Vec4{0, 1, 0, 1} : Vec4{1, 0, 0, 1};
-    const std::vector<Vec4> colours(positions.size(), colour);
-    DrawMesh mesh;
-    mesh.positions = positions;
-    mesh.colors = colours;
-    draw(target, mesh, options);
-  }
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x) {
-      if ((target.color(x, y) & 0xFFFFu) != 0xFF00u) return false;  // red 0, green 255
-    }
-  }
-  return true;
+  return probes::nearer_plane_wins(encoding == Encoding::reversed, near, far,
+                                   static_cast<float>(near_plane), static_cast<float>(far_plane),
+                                   kSize);
 }
 
 // The smallest relative separation s (the farther plane at distance (1 + s)) that resolves, by

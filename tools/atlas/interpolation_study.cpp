@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "draw_probes.hpp"
 #include "edgewise/edgewise.hpp"
 
 namespace edgewise::atlas {
@@ -17,17 +18,6 @@ namespace {
 // The target: a power of two, so that a screen position on the 1/256 grid and a clip w that is
 // a power of two pass through clip space and the viewport mapping without rounding.
 constexpr int kSize = 1024;
-
-// Clip space from "object" positions (x, y, w): w' = w, z' = w / 2 (every depth 1/2; the study
-// draws with the depth test off).
-Mat4 clip_from_xyw() {
-  Mat4 m{};
-  m.m[0][0] = 1.0f;
-  m.m[1][1] = 1.0f;
-  m.m[2][2] = 0.5f;
-  m.m[3][2] = 1.0f;
-  return m;
-}
 
 // Triangles given on screen (pixels) with a clip w and an attribute (red, green, blue in [0, 1])
 // per vertex.
@@ -143,7 +133,7 @@ void add_triangle(std::mt19937_64& rng, double extent, double aspect, double w_l
 
 DrawOptions options_for(InterpolationMethod method, Perspective perspective, Isa isa) {
   DrawOptions options;
-  options.transform = clip_from_xyw();
+  options.transform = probes::clip_from_xyw();
   options.depth_test = DepthTest::always;
   options.depth_write = false;
   options.interpolation = method;
