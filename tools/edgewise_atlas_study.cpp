@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
             result = atlas::aa_study({quick, timer}, cpu);
           } else if (study == "depth") {
             std::filesystem::create_directories(out_dir);
-            result = atlas::depth_study({quick}, cpu, out_dir);
+            result = atlas::depth_study({quick, timer}, cpu, out_dir);
           } else {
             throw tools::UsageError("unknown study '" + study + "'");
           }

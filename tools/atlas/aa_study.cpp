@@ -10,7 +10,7 @@
 
 namespace edgewise::atlas {
 
-StudyOutput aa_study(const AaStudySettings& settings, const std::string& cpu) {
+StudyOutput aa_study(const StudySettings& settings, const std::string& cpu) {
   using namespace tools;
   StudyOutput out("aa", "Anti-aliasing: coverage modes against the exact area", cpu);
   constexpr const char* kPareto = "aa-pareto";

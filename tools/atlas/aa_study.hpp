@@ -5,16 +5,11 @@
 
 #include <string>
 
-#include "atlas/benchmark_timer.hpp"
+#include "atlas/study_settings.hpp"
 #include "atlas/study_output.hpp"
 
 namespace edgewise::atlas {
 
-struct AaStudySettings {
-  bool quick = false;
-  TimerSettings timer;
-};
-
-StudyOutput aa_study(const AaStudySettings& settings, const std::string& cpu);
+StudyOutput aa_study(const StudySettings& settings, const std::string& cpu);
 
 }  // namespace edgewise::atlas

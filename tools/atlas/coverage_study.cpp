@@ -208,7 +208,7 @@ constexpr const char* kMagnitudeDiffering = "coverage-magnitude-differing";
 constexpr const char* kMagnitudeLeaks = "coverage-magnitude-watertight";
 
 // Jittered meshes of 4-px cells moved away from the origin up to the guard band.
-void magnitude_study(const CoverageStudySettings& settings, StudyOutput& out) {
+void magnitude_study(const StudySettings& settings, StudyOutput& out) {
   constexpr int kCells = 24, kCell = 4, kWindow = kCells * kCell;
   const int meshes = settings.quick ? 1 : 8;
   out.add_chart({kMagnitudeDiffering,
@@ -260,7 +260,7 @@ constexpr const char* kSliverLeaks = "coverage-sliver-watertight";
 
 // Thin quads cut along their long diagonal (two slivers sharing it), 64 px long, of growing
 // aspect ratio, at every angle, one per 96-px cell of a 1920x1080 target.
-void sliver_study(const CoverageStudySettings& settings, StudyOutput& out) {
+void sliver_study(const StudySettings& settings, StudyOutput& out) {
   constexpr int kWidth = 1920, kHeight = 1080, kCellPx = 96;
   constexpr double kLength = 64.0;
   const int batches = settings.quick ? 1 : 4;
@@ -326,7 +326,7 @@ constexpr const char* kSizeLeaks = "coverage-size-watertight";
 
 // Jittered meshes of 16x16 cells, the cell from 1/64 px to 4 px, at random places on a
 // 1920x1080 target.
-void size_study(const CoverageStudySettings& settings, StudyOutput& out) {
+void size_study(const StudySettings& settings, StudyOutput& out) {
   constexpr int kCells = 16;
   const int meshes = settings.quick ? 4 : 256;
   out.add_chart({kSizeDiffering, "Pixels decided unlike the exact rasterizer, as triangles shrink",
@@ -393,7 +393,7 @@ constexpr const char* kPareto = "coverage-pareto";
 
 // Random 64-px triangles on a 1920x1080 target: each method's time per triangle (the study's
 // loops, the library's reference and fast paths) and, against it, its differing pixels.
-void speed_study(const CoverageStudySettings& settings, StudyOutput& out) {
+void speed_study(const StudySettings& settings, StudyOutput& out) {
   constexpr int kWidth = 1920, kHeight = 1080;
   const std::size_t count = settings.quick ? 256 : 4096;
   const std::vector<Vec2> vertices =
@@ -466,7 +466,7 @@ void speed_study(const CoverageStudySettings& settings, StudyOutput& out) {
 
 }  // namespace
 
-StudyOutput coverage_study(const CoverageStudySettings& settings, const std::string& cpu) {
+StudyOutput coverage_study(const StudySettings& settings, const std::string& cpu) {
   StudyOutput out("coverage", "Coverage: exact fixed point against float edge functions", cpu);
   magnitude_study(settings, out);
   sliver_study(settings, out);

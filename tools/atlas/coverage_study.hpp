@@ -5,16 +5,11 @@
 // time per triangle.
 #pragma once
 
-#include "atlas/benchmark_timer.hpp"
+#include "atlas/study_settings.hpp"
 #include "atlas/study_output.hpp"
 
 namespace edgewise::atlas {
 
-struct CoverageStudySettings {
-  bool quick = false;  // fewer meshes and triangles: a smoke run
-  TimerSettings timer;
-};
-
-StudyOutput coverage_study(const CoverageStudySettings& settings, const std::string& cpu);
+StudyOutput coverage_study(const StudySettings& settings, const std::string& cpu);
 
 }  // namespace edgewise::atlas

@@ -164,7 +164,7 @@ void why_interpolate_z(const std::string& dir, StudyOutput& out) {
 
 }  // namespace
 
-StudyOutput depth_study(const DepthStudySettings& settings, const std::string& cpu,
+StudyOutput depth_study(const StudySettings& settings, const std::string& cpu,
                         const std::string& dir) {
   StudyOutput out("depth", "Depth: z/w against reversed and linear depth", cpu);
   const int points = settings.quick ? 4 : 16;

@@ -10,15 +10,12 @@
 #include <string>
 
 #include "atlas/study_output.hpp"
+#include "atlas/study_settings.hpp"
 
 namespace edgewise::atlas {
 
-struct DepthStudySettings {
-  bool quick = false;
-};
-
 // Writes its images into `dir` (the study's output folder).
-StudyOutput depth_study(const DepthStudySettings& settings, const std::string& cpu,
+StudyOutput depth_study(const StudySettings& settings, const std::string& cpu,
                         const std::string& dir);
 
 }  // namespace edgewise::atlas

@@ -152,7 +152,7 @@ constexpr const char* kPareto = "interpolation-pareto";
 constexpr const char* kDepthRatio = "interpolation-depth-ratio";
 constexpr const char* kSlivers = "interpolation-slivers";
 
-void pareto(const InterpolationStudySettings& settings, StudyOutput& out) {
+void pareto(const StudySettings& settings, StudyOutput& out) {
   out.add_chart({kPareto, "Error against time per fragment, every method and ISA",
                  "ns per fragment", "RMSE against the exact value (attribute in [0, 1])", true,
                  true, ChartKind::scatter, ""});
@@ -206,7 +206,7 @@ void pareto(const InterpolationStudySettings& settings, StudyOutput& out) {
   out.set_reading(kPareto, reading);
 }
 
-void depth_ratio(const InterpolationStudySettings& settings, StudyOutput& out) {
+void depth_ratio(const StudySettings& settings, StudyOutput& out) {
   out.add_chart({kDepthRatio, "Affine against perspective-correct weights, by depth range",
                  "w_max / w_min across the triangle", "error against the exact value", true, true,
                  ChartKind::line, ""});
@@ -238,7 +238,7 @@ void depth_ratio(const InterpolationStudySettings& settings, StudyOutput& out) {
   out.set_reading(kDepthRatio, reading);
 }
 
-void slivers(const InterpolationStudySettings& settings, StudyOutput& out) {
+void slivers(const StudySettings& settings, StudyOutput& out) {
   out.add_chart({kSlivers, "Worst error of each method as triangles thin", "aspect ratio",
                  "worst error against the exact value", true, true, ChartKind::line, ""});
   const int count = settings.quick ? 4 : 48;
@@ -268,8 +268,7 @@ void slivers(const InterpolationStudySettings& settings, StudyOutput& out) {
 
 }  // namespace
 
-StudyOutput interpolation_study(const InterpolationStudySettings& settings,
-                                const std::string& cpu) {
+StudyOutput interpolation_study(const StudySettings& settings, const std::string& cpu) {
   StudyOutput out("interpolation", "Interpolation: every method against the exact value", cpu);
   pareto(settings, out);
   depth_ratio(settings, out);

@@ -7,16 +7,11 @@
 
 #include <string>
 
-#include "atlas/benchmark_timer.hpp"
+#include "atlas/study_settings.hpp"
 #include "atlas/study_output.hpp"
 
 namespace edgewise::atlas {
 
-struct InterpolationStudySettings {
-  bool quick = false;
-  TimerSettings timer;
-};
-
-StudyOutput interpolation_study(const InterpolationStudySettings& settings, const std::string& cpu);
+StudyOutput interpolation_study(const StudySettings& settings, const std::string& cpu);
 
 }  // namespace edgewise::atlas

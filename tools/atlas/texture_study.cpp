@@ -37,7 +37,7 @@ double rmse_of(std::span<const Vec4> colours, const ts::LinearImage& truth) {
 
 // The checkerboard ground plane (the view of edgewise-texture-quality, at a quarter of full HD;
 // its ground truth is cached beside that tool's).
-void pareto(const TextureStudySettings& settings, StudyOutput& out) {
+void pareto(const StudySettings& settings, StudyOutput& out) {
   const std::int32_t width = settings.quick ? 120 : 960, height = settings.quick ? 68 : 540;
   out.add_chart({kPareto, "Error against time per sample, checkerboard ground plane",
                  "ns per sample", "RMSE against ground truth", true, true, ChartKind::scatter, ""});
@@ -97,7 +97,7 @@ ts::TextureView anisotropic_view(std::int32_t size, double ratio, double minor) 
   return ts::TextureView(size, size, map);
 }
 
-void anisotropy(const TextureStudySettings& settings, StudyOutput& out) {
+void anisotropy(const StudySettings& settings, StudyOutput& out) {
   out.add_chart({kAnisotropy,
                  "Error as the footprint's anisotropy grows (sinusoids, 2 texels across)",
                  "anisotropy (footprint's long axis / short axis)", "RMSE against ground truth",
@@ -139,7 +139,7 @@ void anisotropy(const TextureStudySettings& settings, StudyOutput& out) {
 
 // Sums of 8-bit texels over boxes, from a float32 summed-area table against exact integer
 // sums: the largest error of a box average, in 8-bit codes, as the table grows.
-void summed_area(const TextureStudySettings& settings, StudyOutput& out) {
+void summed_area(const StudySettings& settings, StudyOutput& out) {
   out.add_chart({kSummedArea, "Float32 summed-area sums against exact ones (random 8-bit texels)",
                  "texture side (texels)", "largest error of a box average (8-bit codes)", true,
                  true, ChartKind::line, ""});
@@ -202,7 +202,7 @@ void summed_area(const TextureStudySettings& settings, StudyOutput& out) {
 
 }  // namespace
 
-StudyOutput texture_study(const TextureStudySettings& settings, const std::string& cpu) {
+StudyOutput texture_study(const StudySettings& settings, const std::string& cpu) {
   StudyOutput out("texture", "Texture filtering: every filter against ground truth", cpu);
   pareto(settings, out);
   anisotropy(settings, out);

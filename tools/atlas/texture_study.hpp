@@ -7,16 +7,11 @@
 
 #include <string>
 
-#include "atlas/benchmark_timer.hpp"
+#include "atlas/study_settings.hpp"
 #include "atlas/study_output.hpp"
 
 namespace edgewise::atlas {
 
-struct TextureStudySettings {
-  bool quick = false;
-  TimerSettings timer;
-};
-
-StudyOutput texture_study(const TextureStudySettings& settings, const std::string& cpu);
+StudyOutput texture_study(const StudySettings& settings, const std::string& cpu);
 
 }  // namespace edgewise::atlas

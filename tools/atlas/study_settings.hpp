@@ -1,0 +1,13 @@
+// What every study of the atlas is run with.
+#pragma once
+
+#include "atlas/benchmark_timer.hpp"
+
+namespace edgewise::atlas {
+
+struct StudySettings {
+  bool quick = false;  // few cases and short timings: a smoke run, its figures rough
+  TimerSettings timer;
+};
+
+}  // namespace edgewise::atlas
