@@ -119,8 +119,10 @@ TEST(FilterMethods, ReadsLevelOfDetailAgreesWithTheSampler) {
   const Texture texture = Texture::from_rgba8(
       kSide, kSide, texels, ColorEncoding::linear,
       TextureBuild{PyramidFilter::box, /*ripmaps=*/true, /*summed_area_table=*/true});
-  // A diagonal footprint of 3 x 5 texels: a fractional level, anisotropy below 2.
-  const TextureQuery query{0.3f, 0.6f, 3.0f / kSide, 3.0f / kSide, -5.0f / kSide, 5.0f / kSide};
+  // A diagonal footprint of 4 x 7 texels: a fractional level, anisotropy below 2, and rho
+  // 7 sqrt(2) (exact) against 7 (max_axis) puts lambda at 2.52 and 2.02
+  // (log2(rho) - log2(3) / 2), so that even mip_nearest's levels (3 and 2) differ.
+  const TextureQuery query{0.3f, 0.6f, 4.0f / kSide, 4.0f / kSide, -7.0f / kSide, 7.0f / kSide};
   const auto result = [&](const SamplerOptions& options) {
     Vec4 out;
     sample(texture, {options, Isa::reference}, std::span(&query, 1), std::span(&out, 1));
