@@ -231,10 +231,10 @@ void depth_ratio(const StudySettings& settings, StudyOutput& out) {
   char reading[400];
   std::snprintf(reading, sizeof reading,
                 "Triangles about 96 px across. Affine weights stay within 1/255 of the exact "
-                "value up to a depth range of %g here; perspective-correct weights stay within "
-                "%.4f (the 8-bit rounding) up to w_max / w_min = 1e6, w near 0 against the far "
-                "vertex.",
-                affine_safe, correct_worst);
+                "value up to a depth range of %g here (the derived bound allows 1.0158); "
+                "perspective-correct weights stay within %.4f up to w_max / w_min = 1e6, w near "
+                "0 against the far vertex (the 8-bit rounding alone is %.4f).",
+                affine_safe, correct_worst, 0.5 / 255.0);
   out.set_reading(kDepthRatio, reading);
 }
 
