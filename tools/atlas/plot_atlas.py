@@ -31,6 +31,15 @@ class InputError(Exception):
     pass
 
 
+# The page's order: from the pixel's coverage to what is drawn in it; other studies follow.
+ORDER = ["coverage", "interpolation", "depth", "texture", "aa"]
+
+
+def study_order(json_name):
+    stem = json_name[: -len(".json")]
+    return (ORDER.index(stem) if stem in ORDER else len(ORDER), stem)
+
+
 def read_study(directory, json_name):
     """The study's description and its points, grouped by chart then series."""
     json_path = os.path.join(directory, json_name)
@@ -199,7 +208,8 @@ def main():
     parser.add_argument("--summary", action="store_true")
     arguments = parser.parse_args()
     try:
-        names = sorted(n for n in os.listdir(arguments.directory) if n.endswith(".json"))
+        names = sorted((n for n in os.listdir(arguments.directory) if n.endswith(".json")),
+                       key=study_order)
     except OSError as error:
         print(f"plot_atlas.py: {error}", file=sys.stderr)
         return 1
