@@ -107,15 +107,22 @@ def draw_chart(plt, study, chart, series, path_stem):
         axis.set_xticks(range(len(labels)), labels, rotation=30, ha="right", fontsize=8)
         axis.bar_label(bars, fmt="%.3g", fontsize=7)
     else:
+        # Twenty colours, and markers cycling apart from them, tell up to twenty series apart.
+        colours = plt.get_cmap("tab20").colors if len(series) > 10 else plt.get_cmap("tab10").colors
         for index, (name, points) in enumerate(series.items()):
             xs = [float(x) for x, _ in points]
             ys = [y for _, y in points]
-            marker = MARKERS[index % len(MARKERS)]
+            style = {"marker": MARKERS[index % len(MARKERS)], "color": colours[index % len(colours)],
+                     "label": name, "clip_on": False}
             if kind == "scatter":
-                axis.scatter(xs, ys, marker=marker, label=name, clip_on=False, zorder=3)
+                axis.scatter(xs, ys, zorder=3, **style)
             else:
-                axis.plot(xs, ys, marker=marker, label=name, clip_on=False)
-        axis.legend(fontsize=8)
+                axis.plot(xs, ys, **style)
+        if len(series) > 6:  # beside the axes, where it hides no point
+            figure.set_size_inches(10.5, 4.6)
+            axis.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+        else:
+            axis.legend(fontsize=8)
         if chart["x_log"]:
             axis.set_xscale("log", base=2 if kind == "line" else 10)
     scale_y(axis, chart, values)
