@@ -16,6 +16,8 @@
 #include "atlas/interpolation_study.hpp"
 #if EDGEWISE_ATLAS_TEXTURE
 #include "atlas/texture_study.hpp"
+#include "texture_quality/ground_truth_store.hpp"
+#include "texture_quality/writable_directory.hpp"
 #endif
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
@@ -48,17 +50,21 @@ int main(int argc, char** argv) {
   // Google Benchmark reads its own flags; the atlas passes none.
   int benchmark_argc = 1;
   benchmark::Initialize(&benchmark_argc, argv);
-  std::string study, out_dir = "atlas";
+  std::string study, out_dir = "atlas", cache;
   bool quick = false;
   int repetitions = 5;
   return tools::run_tool(
-      argc, argv, "edgewise-atlas-study", {"STUDY [-o DIR] [--quick] [--repetitions N]"},
+      argc, argv, "edgewise-atlas-study",
+      {"STUDY [-o DIR] [--quick] [--repetitions N] [--cache DIR]"},
       [&](CLI::App& app) -> tools::ToolWork {
         app.description(kDescription);
         app.add_option("study", study, "the study: coverage, interpolation, depth, texture or aa")
             ->required();
         app.add_option("-o,--out", out_dir, "output folder (made if missing; default atlas)");
         app.add_flag("--quick", quick, "a short run with few cases, for testing the tool");
+        app.add_option("--cache", cache,
+                       "where ground truths are kept (default: edgewise-texture-quality's, "
+                       "$XDG_CACHE_HOME/edgewise or ~/.cache/edgewise)");
         app.add_option("--repetitions", repetitions, "timed repetitions per method (default 5)")
             ->check(CLI::Range(2, 100));
         return [&]() {
@@ -66,22 +72,26 @@ int main(int argc, char** argv) {
           timer.repetitions = repetitions;
           if (quick) timer.min_seconds = 0.01;
           const std::string cpu = atlas::cpu_name();
+          atlas::StudySettings settings{quick, timer, {}};
           std::optional<atlas::StudyOutput> result;
           if (study == "coverage") {
-            result = atlas::coverage_study({quick, timer}, cpu);
+            result = atlas::coverage_study(settings, cpu);
           } else if (study == "interpolation") {
-            result = atlas::interpolation_study({quick, timer}, cpu);
+            result = atlas::interpolation_study(settings, cpu);
           } else if (study == "texture") {
 #if EDGEWISE_ATLAS_TEXTURE
-            result = atlas::texture_study({quick, timer}, cpu);
+            settings.cache = cache.empty() ? texture_quality::default_cache_directory()
+                                           : std::filesystem::path(cache);
+            texture_quality::prepare_writable_directory(settings.cache);
+            result = atlas::texture_study(settings, cpu);
 #else
             throw std::runtime_error("the texture study needs OpenImageIO, not found at build");
 #endif
           } else if (study == "aa") {
-            result = atlas::aa_study({quick, timer}, cpu);
+            result = atlas::aa_study(settings, cpu);
           } else if (study == "depth") {
             std::filesystem::create_directories(out_dir);
-            result = atlas::depth_study({quick, timer}, cpu, out_dir);
+            result = atlas::depth_study(settings, cpu, out_dir);
           } else {
             throw tools::UsageError("unknown study '" + study + "'");
           }
