@@ -11,102 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "atlas/coverage_departures.hpp"
 #include "atlas/edge_function_methods.hpp"
 #include "edgewise/edgewise.hpp"
 #include "exact_area_triangles.hpp"
 
 namespace edgewise::atlas {
 namespace {
-
-// Per triangle, the pixels (y * window width + x, from the window's corner) it covers, sorted.
-using TrianglePixels = std::vector<std::vector<std::uint32_t>>;
-
-std::size_t triangle_count(const std::vector<Vec2>& vertices) {
-  return vertices.size() / 3;
-}
-
-// The library's coverage (the best ISA), clipped to the window by a scissor: the exact answer.
-class PixelListSink final : public CoverageSink {
- public:
-  PixelListSink(TrianglePixels& pixels, const PixelRect& window)
-      : pixels_(pixels), window_(window) {}
-  void consume(std::span<const TileCoverage> tiles) override {
-    const auto width = static_cast<std::uint32_t>(window_.x1 - window_.x0);
-    for (const TileCoverage& tile : tiles) {
-      for (std::uint64_t mask = tile.mask; mask != 0; mask &= mask - 1) {
-        const int bit = std::countr_zero(mask);
-        const auto x = static_cast<std::uint32_t>(tile.tile_x * 8 + bit % 8 - window_.x0);
-        const auto y = static_cast<std::uint32_t>(tile.tile_y * 8 + bit / 8 - window_.y0);
-        pixels_[tile.triangle].push_back(y * width + x);
-      }
-    }
-  }
-
- private:
-  TrianglePixels& pixels_;
-  PixelRect window_;
-};
-
-TrianglePixels exact_pixels(const std::vector<Vec2>& vertices, const PixelRect& window) {
-  TrianglePixels pixels(triangle_count(vertices));
-  PixelListSink sink(pixels, window);
-  const RasterTarget target{window.x1, window.y1, window};
-  rasterize(vertices, {}, target, RasterOptions{}, sink);
-  for (auto& list : pixels)
-    std::sort(list.begin(), list.end());
-  return pixels;
-}
-
-TrianglePixels method_pixels(EdgeArithmetic arithmetic, const std::vector<Vec2>& vertices,
-                             const PixelRect& window) {
-  TrianglePixels pixels(triangle_count(vertices));
-  const auto width = static_cast<std::uint32_t>(window.x1 - window.x0);
-  for (std::size_t t = 0; t < pixels.size(); ++t) {
-    const Vec2 triangle[3] = {vertices[3 * t], vertices[3 * t + 1], vertices[3 * t + 2]};
-    cover_triangle(arithmetic, triangle, window, [&](std::int32_t x, std::int32_t y) {
-      pixels[t].push_back(static_cast<std::uint32_t>(y - window.y0) * width +
-                          static_cast<std::uint32_t>(x - window.x0));
-    });
-  }
-  return pixels;
-}
-
-// How a method's coverage departs from the exact one.
-struct Departure {
-  std::uint64_t covered = 0;    // (triangle, pixel) pairs of the exact coverage
-  std::uint64_t differing = 0;  // pairs in one coverage and not the other
-  std::uint64_t holes = 0;      // pixels the exact union covers and the method's does not
-  std::uint64_t doubles = 0;    // pixels the method covers more often than the exact coverage
-  void add(const Departure& d) {
-    covered += d.covered;
-    differing += d.differing;
-    holes += d.holes;
-    doubles += d.doubles;
-  }
-};
-
-Departure compare(const TrianglePixels& exact, const TrianglePixels& method,
-                  std::size_t window_pixels) {
-  Departure d;
-  std::vector<std::uint16_t> exact_count(window_pixels), method_count(window_pixels);
-  std::vector<std::uint32_t> difference;
-  for (std::size_t t = 0; t < exact.size(); ++t) {
-    d.covered += exact[t].size();
-    difference.clear();
-    std::set_symmetric_difference(exact[t].begin(), exact[t].end(), method[t].begin(),
-                                  method[t].end(), std::back_inserter(difference));
-    d.differing += difference.size();
-    for (std::uint32_t p : exact[t])
-      ++exact_count[p];
-    for (std::uint32_t p : method[t])
-      ++method_count[p];
-  }
-  for (std::size_t p = 0; p < window_pixels; ++p) {
-    d.holes += exact_count[p] > 0 && method_count[p] == 0;
-    d.doubles += method_count[p] > 1 && method_count[p] > exact_count[p];
-  }
-  return d;
-}
 
 // A square of cells x cells, each `cell` / 256 px, split into triangles along a random
 // diagonal; the inner vertices moved by up to a third of a cell (multiples of 1/256 px), the
@@ -139,36 +50,10 @@ std::vector<Vec2> jittered_grid(int cells, int cell, float x, float y, std::mt19
   return vertices;
 }
 
-double per_thousand(std::uint64_t count, std::uint64_t of) {
-  return of == 0 ? 0.0 : 1000.0 * static_cast<double>(count) / static_cast<double>(of);
-}
-
-const EdgeArithmetic kInexact[] = {EdgeArithmetic::float64, EdgeArithmetic::float32};
 constexpr const char* kExactSeries = "fixed point (exact)";
 
-// The departures of float64 and float32 (in kInexact's order) from the library's coverage.
-// The study's own fixed-point loop must match the library pixel for pixel: if it does not, the
-// harness (snapping, fill rule, box) is wrong and so would be every figure.
-struct Departures {
-  Departure method[2];
-  void add(const Departures& d) {
-    method[0].add(d.method[0]);
-    method[1].add(d.method[1]);
-  }
-};
-
-Departures measure(const std::vector<Vec2>& vertices, const PixelRect& window) {
-  const TrianglePixels exact = exact_pixels(vertices, window);
-  const auto window_pixels = static_cast<std::size_t>(window.x1 - window.x0) *
-                             static_cast<std::size_t>(window.y1 - window.y0);
-  if (compare(exact, method_pixels(EdgeArithmetic::fixed_point, vertices, window), window_pixels)
-          .differing != 0) {
-    throw std::logic_error("the study's fixed-point loop departs from the library's coverage");
-  }
-  Departures d;
-  for (int i = 0; i < 2; ++i)
-    d.method[i] = compare(exact, method_pixels(kInexact[i], vertices, window), window_pixels);
-  return d;
+double per_thousand(std::uint64_t count, std::uint64_t of) {
+  return of == 0 ? 0.0 : 1000.0 * static_cast<double>(count) / static_cast<double>(of);
 }
 
 // The smallest x of a series where y is nonzero, or a negative number if there is none.
@@ -227,7 +112,8 @@ void magnitude_study(const StudySettings& settings, StudyOutput& out) {
     Departures total;
     for (int m = 0; m < meshes; ++m) {
       const auto corner = static_cast<float>(origin);
-      total.add(measure(jittered_grid(kCells, kCell * 256, corner, corner, rng), window));
+      total.add(
+          measure_departures(jittered_grid(kCells, kCell * 256, corner, corner, rng), window));
     }
     const std::uint64_t mesh_pixels = std::uint64_t{kWindow} * kWindow * meshes;
     for (int i = 0; i < 2; ++i) {
@@ -301,7 +187,7 @@ void sliver_study(const StudySettings& settings, StudyOutput& out) {
           ++quads;
         }
       }
-      total.add(measure(vertices, window));
+      total.add(measure_departures(vertices, window));
     }
     for (int i = 0; i < 2; ++i) {
       const Departure& d = total.method[i];
@@ -348,7 +234,7 @@ void size_study(const StudySettings& settings, StudyOutput& out) {
       const PixelRect window{x / 256, y / 256, x / 256 + extent + 1, y / 256 + extent + 1};
       const std::vector<Vec2> mesh = jittered_grid(kCells, cell, static_cast<float>(x) / 256.0f,
                                                    static_cast<float>(y) / 256.0f, rng);
-      total.add(measure(mesh, window));
+      total.add(measure_departures(mesh, window));
     }
     const std::uint64_t triangles = std::uint64_t{2} * kCells * kCells * meshes;
     for (int i = 0; i < 2; ++i) {
@@ -403,7 +289,7 @@ void speed_study(const StudySettings& settings, StudyOutput& out) {
                  "ns per triangle", false, true, ChartKind::bar, ""});
   out.add_chart({kPareto, "Error against time, 64-px triangles on 1920x1080", "ns per triangle",
                  "differing pixels per 1000 covered", true, true, ChartKind::scatter, ""});
-  const Departures departures = measure(vertices, window);
+  const Departures departures = measure_departures(vertices, window);
   std::vector<std::uint8_t> counts(std::size_t{kWidth} * kHeight);
   const double per_triangle = 1.0 / static_cast<double>(count);
   std::string fastest_exact;
