@@ -23,6 +23,15 @@ inline Mat4 clip_from_xyw() {
   return m;
 }
 
+// The position clip_from_xyw() takes for a vertex at screen point (sx, sy) of a width x height
+// target with clip w: exact when the sizes and w are powers of two and sx, sy lie on the 1/256
+// grid.
+inline Vec3 xyw_position(float sx, float sy, float w, std::int32_t width, std::int32_t height) {
+  const float x_ndc = sx * (2.0f / static_cast<float>(width)) - 1.0f;
+  const float y_ndc = 1.0f - sy * (2.0f / static_cast<float>(height));
+  return {x_ndc * w, y_ndc * w, w};
+}
+
 // perspective() with z' = w - z: z'/w = 1 - z/w, 1 at the near plane and 0 at the far one.
 inline Mat4 reversed_depth(Mat4 m) {
   for (int c = 0; c < 4; ++c)

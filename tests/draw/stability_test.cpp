@@ -60,8 +60,8 @@ AffineGap affine_gap(double ratio, int triangles, std::uint64_t seed) {
     for (int i = 0; i < 3; ++i) {
       const double sx = random.uniform(16.0, kSize - 16.0), sy = random.uniform(16.0, kSize - 16.0);
       const auto w = static_cast<float>(ws[i]);
-      positions.push_back({static_cast<float>(2.0 * sx / kSize - 1.0) * w,
-                           static_cast<float>(1.0 - 2.0 * sy / kSize) * w, w});
+      positions.push_back(
+          probes::xyw_position(static_cast<float>(sx), static_cast<float>(sy), w, kSize, kSize));
       // Red from 0 to 1 across the vertices (range 1): the bound's worst case.
       const float red = i == 0 ? 0.0f : (i == 1 ? 1.0f : static_cast<float>(random.uniform()));
       colours.push_back({red, 0.5f, 0.5f, 1.0f});
@@ -73,7 +73,9 @@ AffineGap affine_gap(double ratio, int triangles, std::uint64_t seed) {
     for (std::size_t i = 0; i < affine.size(); i += 4)
       gap.worst_codes = std::max(gap.worst_codes, std::abs(int(affine[i]) - int(correct[i])));
     gap.bound_codes = std::max(
-        gap.bound_codes, 255.0 * (high - low) * detail::affine_weight_error_bound(1.0, ratio));
+        gap.bound_codes,
+        255.0 * (high - low) *
+            detail::affine_weight_error_bound(1.0, static_cast<float>(ratio)));  // w as drawn
   }
   return gap;
 }

@@ -28,14 +28,12 @@ struct ScreenTriangles {
   std::size_t count() const { return screen.size() / 3; }
 };
 
-// The positions draw() takes for them: x = x_ndc w, y = y_ndc w, the "z" slot holding w.
+// The positions draw() takes for them, with probes::clip_from_xyw().
 std::vector<Vec3> positions_of(const ScreenTriangles& triangles) {
   std::vector<Vec3> positions;
   for (std::size_t i = 0; i < triangles.screen.size(); ++i) {
-    const float w = triangles.w[i];
-    const float x_ndc = triangles.screen[i].x * (2.0f / kSize) - 1.0f;
-    const float y_ndc = 1.0f - triangles.screen[i].y * (2.0f / kSize);
-    positions.push_back({x_ndc * w, y_ndc * w, w});
+    positions.push_back(probes::xyw_position(triangles.screen[i].x, triangles.screen[i].y,
+                                             triangles.w[i], kSize, kSize));
   }
   return positions;
 }
