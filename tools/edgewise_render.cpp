@@ -250,6 +250,7 @@ void print_counts(const DrawReport& report) {
   print_count("fragments", report.fragments);
   print_count("fragments passed", report.fragments_passed);
   print_count("tiles skipped", report.tiles_skipped, "hidden by the per-tile depth bound");
+  print_count("constant", report.fragments_constant, "fragments given one colour under the budget");
 }
 
 // ---- The three modes: one frame, --compare-isas, --each-filter --------------------------------

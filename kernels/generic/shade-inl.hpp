@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <type_traits>
 
@@ -22,6 +23,7 @@
 
 #include "../src/depth_plane.hpp"
 #include "../src/shade_batch.hpp"
+#include "../src/shading_budget.hpp"
 #include "interpolation-inl.hpp"
 #include "method_interpolator-inl.hpp"
 #include "plane_setup-inl.hpp"
@@ -57,7 +59,15 @@ class ShadingVisitor {
         // Model no more than the scene needs: Gouraud colour by plane equations interpolates the
         // colours (and diffuse the normals) directly, and then, untextured, needs nothing per
         // triangle beyond the planes.
-        needs_vertices_(textured_ || !colour_planes_),
+        needs_vertices_(textured_ || !colour_planes_ || batch.budget_codes > 0),
+        // Under an error budget (shading_budget.hpp): the triangles whose shading it bounds, and
+        // whether textured tiles may take one colour.
+        budget_codes_(batch.budget_codes),
+        budget_shading_(budget_codes_ > 0 &&
+                        (colour_planes_ || (textured_ && batch.shading == Shading::flat))),
+        budget_tiles_(budget_shading_ && textured_ &&
+                      detail::texture_tiles_eligible(*batch.texture, batch.sampler)),
+        budget_state_{batch.shading, batch.perspective, batch.light, batch.ambient},
         pattern_(batch.coverage.samples),
         sample_reach_(sample_reach(pattern_)) {
     for (std::size_t k = 0; k < pattern_.size() && k < kMaxSamples; ++k) {
@@ -136,6 +146,7 @@ class ShadingVisitor {
       if (batch_.normals != nullptr) normal_[i] = batch_.normals[corner[i]];
       if (textured_) uv[i] = batch_.uvs[corner[i]];
     }
+    if (budget_shading_) choose_within_budget(p, screen);
     // Interpolation coordinates from a pixel corner near the triangle keep float32 exact.
     origin_x_ = static_cast<std::int32_t>(std::floor(p[0].x));
     origin_y_ = static_cast<std::int32_t>(std::floor(p[0].y));
@@ -149,9 +160,10 @@ class ShadingVisitor {
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
     if (batch_.normals != nullptr && !normal_planes_) scale_normals();
     if (batch_.shading == Shading::flat) flat_color_ = pack_rgba8(color_[0]);
-    if (textured_)
-      texture_.begin_triangle(detail::make_texture_planes(p, uv, screen.w, batch_.perspective),
-                              batch_.derivatives);
+    if (textured_) {
+      texture_planes_ = detail::make_texture_planes(p, uv, screen.w, batch_.perspective);
+      texture_.begin_triangle(texture_planes_, batch_.derivatives);
+    }
     if (!colour_planes_ && batch_.shading != Shading::flat) {
       interpolator_ = MethodInterpolator<Arch>(batch_.method, screen, origin_x_, origin_y_);
       if (perspective_) divide_ = PerspectiveDivide<Arch>(screen);
@@ -175,7 +187,7 @@ class ShadingVisitor {
     ColumnTerms columns;
     set_up_tile_columns(px, columns);
     // The walks deliver a triangle's tiles row by row: the row terms serve a whole tile row.
-    if (colour_planes_ && tile_y != row_bases_tile_y_) {
+    if (colour_planes_ && !constant_ && tile_y != row_bases_tile_y_) {
       set_up_colour_rows(py, row_bases_);
       row_bases_tile_y_ = tile_y;
     }
@@ -476,7 +488,7 @@ class ShadingVisitor {
           shade_rows<Test, true>(mask, rows, depth, color, tile_px, tile_py, columns[column],
                                  nullptr, stored_max);
         } else {
-          if (colour_planes_ && set_up_row != row) {
+          if (colour_planes_ && !constant_ && set_up_row != row) {
             set_up_colour_rows(tile_py, colour_row_bases);
             set_up_row = row;
           }
@@ -512,7 +524,7 @@ class ShadingVisitor {
           interpolation_detail::lane_centers<Arch>(px + static_cast<std::int32_t>(h * kLanes)) -
           Floats(depth_.x0);
       columns.depth[h] = Floats(depth_.dzdx) * dx;
-      if (colour_planes_) {
+      if (colour_planes_ && !constant_) {
         for (int k = 0; k < planes_used(); ++k)
           columns.colour[k][h] = Floats(plane_[k].dx) * dx;
       }
@@ -544,6 +556,8 @@ class ShadingVisitor {
                                          const ColumnTerms& columns,
                                          const float (*colour_row_bases)[kTileSize],
                                          Floats& stored_max) {
+    if (constant_)
+      return shade_constant_rows<Test>(mask, rows, depth, color, py, columns, stored_max);
     if (colour_planes_ && batch_.depth_write) {
       if (normal_planes_) {
         return shade_planar_choice<Test, RowTermsPerRow, true>(
@@ -679,11 +693,56 @@ class ShadingVisitor {
     Mask writes[kTileSize][kParts];
     const std::uint32_t written_rows =
         depth_test_rows(mask, rows, depth, py, columns, stored_max, writes);
+    if (written_rows != 0 && budget_tiles_ && shade_interval_.bounded) {
+      const std::optional<std::uint32_t> constant =
+          detail::constant_texture_tile(shade_interval_, texture_planes_, batch_.derivatives,
+                                        *batch_.texture, batch_.sampler, px, py, budget_codes_);
+      if (constant) return write_constant_rows(written_rows, color, writes, *constant);
+    }
     if (written_rows != 0) {
       texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
                            31 - std::countl_zero(written_rows));
     }
     write_textured_rows(written_rows, color, px, py, columns, colour_row_bases, writes);
+  }
+
+  // A tile the budget gives one colour: written under `writes` in the rows of `written_rows`.
+  [[gnu::always_inline]] void write_constant_rows(std::uint32_t written_rows, std::uint32_t* color,
+                                                  const Mask (*writes)[kParts],
+                                                  std::uint32_t constant) {
+    const Ints packed(static_cast<std::int32_t>(constant));
+    std::uint64_t written = 0;
+    for (; written_rows != 0; written_rows &= written_rows - 1) {
+      const int row = std::countr_zero(written_rows);
+      for (std::size_t h = 0; h < kParts; ++h) {
+        write_colour(color, row, h, writes[row][h], packed);
+        written += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(writes[row][h])));
+      }
+    }
+    constant_fragments_ += written;
+  }
+
+  // Untextured rows of a triangle the budget gives one colour: the depth test, then the colour
+  // where it passed.
+  template <DepthTest Test>
+  [[gnu::always_inline]] void shade_constant_rows(std::uint64_t mask, std::uint32_t rows,
+                                                  float* depth, std::uint32_t* color,
+                                                  std::int32_t py, const ColumnTerms& columns,
+                                                  Floats& stored_max) {
+    const Ints packed(static_cast<std::int32_t>(constant_colour_));
+    std::uint64_t written = 0;
+    for (; rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
+      const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
+      const Floats row_base(detail::depth_row_base(depth_, py + row));
+      for (std::size_t h = 0; h < kParts; ++h) {
+        const Mask write =
+            depth_step<Test>(depth, row, h, row_base, columns.depth[h], row_mask, stored_max);
+        write_colour(color, row, h, write, packed);
+        written += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
+      }
+    }
+    constant_fragments_ += written;
   }
 
   // The depth pass of a textured tile: `writes` gets the lanes to write of each covered row;
@@ -823,9 +882,32 @@ class ShadingVisitor {
     counts.tiles_skipped += tiles_skipped_;
     counts.fragments += fragments_;
     counts.passed += passed_;
+    counts.constant += constant_fragments_;
   }
 
  private:
+  // The budget's choice for the triangle whose vertices begin_triangle_from_vertices() read:
+  // its shade interval, and one colour for it when untextured and within the budget.
+  void choose_within_budget(const Vec2 (&p)[3], const ScreenTriangle& screen) {
+    detail::BudgetTriangle triangle;
+    for (int i = 0; i < 3; ++i) {
+      triangle.position[i] = p[i];
+      triangle.w[i] = screen.w[i];
+      triangle.colour[i] = color_[i];
+      triangle.normal[i] = normal_[i];
+    }
+    const double width_limit = textured_ ? std::numeric_limits<double>::infinity()
+                                         : detail::untextured_width_limit(budget_codes_);
+    shade_interval_ = detail::shade_interval(triangle, budget_state_, width_limit);
+    constant_ = false;
+    if (!textured_) {
+      const std::optional<std::uint32_t> colour =
+          detail::constant_colour(shade_interval_, budget_codes_);
+      constant_ = colour.has_value();
+      constant_colour_ = colour.value_or(0u);
+    }
+  }
+
   // Scales the three normals by one power of two (exact, and n / |n| is unchanged) so that the
   // largest component is near 1: float32 squared lengths then neither overflow (components
   // above ~1.8e19) nor underflow (below ~1e-19).
@@ -986,6 +1068,9 @@ class ShadingVisitor {
   const bool keep_bounds_, reject_hidden_;
   const bool textured_;
   const bool needs_vertices_;  // begin_triangle() reads the vertices for more than the planes
+  const int budget_codes_;
+  const bool budget_shading_, budget_tiles_;
+  const detail::BudgetState budget_state_;
   // The current group's planes and triangle.
   PlaneGroup<Arch> group_{};
   detail::DepthPlane depth_{};
@@ -993,6 +1078,11 @@ class ShadingVisitor {
   Vec4 color_[3]{};
   Vec3 normal_[3]{};
   std::uint32_t flat_color_ = 0;
+  // The budget's choices for the current triangle.
+  detail::ShadeInterval shade_interval_{};
+  bool constant_ = false;  // untextured, drawn in one colour
+  std::uint32_t constant_colour_ = 0;
+  detail::TexturePlanes texture_planes_{};
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
   float min_inverse_w_ = 1.0f;  // the plane of 1 / w's floor (PlaneGroup::min_inverse_w)
@@ -1005,6 +1095,7 @@ class ShadingVisitor {
   std::uint64_t fragments_ = 0;
   std::uint64_t tiles_skipped_ = 0;
   std::uint64_t passed_ = 0;
+  std::uint64_t constant_fragments_ = 0;
   TextureTile<Arch> texture_;
   // The target's sample pattern (empty: pixel centres) and its reach (sample_walk-inl.hpp).
   std::span<const SampleOffset> pattern_;

@@ -7,11 +7,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <span>
 
 #include "../src/depth_plane.hpp"
 #include "../src/framebuffer_access.hpp"
 #include "../src/shade_batch.hpp"
+#include "../src/shading_budget.hpp"
 #include "../src/texture_planes.hpp"
 #include "interpolation_reference.hpp"
 #include "coverage_reference.hpp"
@@ -149,6 +152,33 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
       const double w[3] = {c[0].w, c[1].w, c[2].w};
       texture_planes = detail::make_texture_planes(p, uv, w, batch.perspective);
     }
+    // The error budget's choices (shading_budget.hpp), made from the same inputs as the kernels'.
+    const bool plane_shading =
+        batch.shading == Shading::gouraud || batch.shading == Shading::diffuse;
+    const bool budget_shading =
+        batch.budget_codes > 0 &&
+        (plane_shading || (batch.texture != nullptr && batch.shading == Shading::flat));
+    detail::ShadeInterval interval;
+    std::optional<std::uint32_t> constant;
+    if (budget_shading) {
+      detail::BudgetTriangle budget_triangle;
+      for (int i = 0; i < 3; ++i) {
+        budget_triangle.position[i] = c[i].position;
+        budget_triangle.w[i] = c[i].w;
+        budget_triangle.colour[i] = c[i].color;
+        budget_triangle.normal[i] = c[i].normal;
+      }
+      const double width_limit = batch.texture != nullptr
+                                     ? std::numeric_limits<double>::infinity()
+                                     : detail::untextured_width_limit(batch.budget_codes);
+      interval = detail::shade_interval(
+          budget_triangle, {batch.shading, batch.perspective, batch.light, batch.ambient},
+          width_limit);
+      if (batch.texture == nullptr)
+        constant = detail::constant_colour(interval, batch.budget_codes);
+    }
+    const bool budget_tiles = budget_shading && batch.texture != nullptr && interval.bounded &&
+                              detail::texture_tiles_eligible(*batch.texture, batch.sampler);
     const PixelRect box = candidate_pixels(tri, batch.coverage.clip);
     for (std::int32_t py = box.y0; py < box.y1; ++py) {
       for (std::int32_t px = box.x0; px < box.x1; ++px) {
@@ -168,17 +198,25 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
           passed[k] = any_passed = true;
         }
         if (!any_passed) continue;
+        std::optional<std::uint32_t> budget_colour = constant;
+        if (budget_tiles) {
+          budget_colour = detail::constant_texture_tile(interval, texture_planes, batch.derivatives,
+                                                        *batch.texture, batch.sampler, px & ~7,
+                                                        py & ~7, batch.budget_codes);
+        }
         std::array<double, 4> rgba = shaded_colour(batch, c, px + 0.5, py + 0.5);
-        if (batch.texture != nullptr) {
+        if (batch.texture != nullptr && !budget_colour) {
           const TextureQuery query =
               detail::texture_query(texture_planes, batch.derivatives, px, py);
           const Rgba texel = sample(*batch.texture, batch.sampler, query);
           for (int k = 0; k < 4; ++k)
             rgba[k] *= texel[k];
         }
-        const std::uint32_t packed = pack(rgba);
+        const std::uint32_t packed = budget_colour ? *budget_colour : pack(rgba);
         for (std::size_t k = 0; k < samples; ++k) {
-          if (passed[k]) batch.color_tiles[sample_index(batch, px, py, k)] = packed;
+          if (!passed[k]) continue;
+          batch.color_tiles[sample_index(batch, px, py, k)] = packed;
+          if (budget_colour) ++counts.constant;
         }
       }
     }

@@ -91,6 +91,7 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
     report.fragments += counts.shading.fragments;
     report.fragments_passed += counts.shading.passed;
     report.tiles_skipped += counts.shading.tiles_skipped;
+    report.fragments_constant += counts.shading.constant;
   }
 }
 

@@ -10,6 +10,7 @@
 #include "draw_stages.hpp"
 #include "framebuffer_access.hpp"
 #include "shade_batch.hpp"
+#include "shading_budget.hpp"
 #include "texture_description.hpp"
 
 namespace edgewise {
@@ -38,6 +39,9 @@ void validate(const DrawMesh& mesh, const DrawOptions& options) {
                                   std::to_string(n) + " positions (a texture needs one each)");
     }
     detail::validate_sampler(*options.texture->texture, options.texture->sampler, "draw");
+  }
+  if (options.error_budget && !(*options.error_budget >= 0.0f)) {
+    throw std::invalid_argument("draw: the error budget must be a number >= 0");
   }
   const std::size_t corners = mesh.indices.empty() ? n : mesh.indices.size();
   if (corners % 3 != 0) {
@@ -99,6 +103,10 @@ ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
     batch.sampler = options.texture->sampler;
     batch.derivatives = options.texture->derivatives;
   }
+  // Multisampled pixels are shaded at centres that may lie outside the triangle, where the
+  // budget's bounds do not hold: drawn exactly.
+  if (batch.sample_count() == 1 && options.interpolation == InterpolationMethod::plane_equations)
+    batch.budget_codes = budget_codes(options.error_budget);
   return batch;
 }
 
@@ -124,6 +132,7 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
   report.fragments = counts.fragments;
   report.fragments_passed = counts.passed;
   report.tiles_skipped = counts.tiles_skipped;
+  report.fragments_constant = counts.constant;
 }
 
 }  // namespace detail

@@ -40,6 +40,8 @@ struct ShadeBatch {
   const TextureDescription* texture_description = nullptr;  // the texture, flattened
   SamplerOptions sampler{};
   TextureDerivatives derivatives = TextureDerivatives::quad;
+  // The codes DrawOptions::error_budget allows (shading_budget.hpp); 0: the exact methods.
+  int budget_codes = 0;
 
   // Samples per pixel of the target (framebuffer.hpp gives the layout).
   std::size_t sample_count() const {
@@ -51,6 +53,7 @@ struct ShadeCounts {
   std::uint64_t fragments = 0;      // covered samples
   std::uint64_t passed = 0;         // samples that passed the depth test
   std::uint64_t tiles_skipped = 0;  // tiles rejected whole by their depth bound
+  std::uint64_t constant = 0;       // passed samples written with a budget's constant colour
 };
 
 }  // namespace edgewise::detail

@@ -6,6 +6,7 @@
 // non-finite texel is non-finite too.
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -54,6 +55,7 @@ class TextureBuilder {
     Texture texture;
     texture.format_ = format;
     texture.encoding_ = encoding;
+    texture.pyramid_ = build.filter;
     TextureBuilder builder(texture, format);
 
     // Mipmaps: halve (rounding down, never below 1) until 1 x 1.
@@ -99,10 +101,70 @@ class TextureBuilder {
       texture.sat_ =
           detail::build_summed_area_table(format, encoding, builder.view(texture.levels_[0]));
     }
+    for (const TextureLevel& level : texture.levels_)
+      texture.ranges_.push_back(build_texel_ranges(texture, level));
     return texture;
   }
 
  private:
+  // TexelRanges of a level: the blocks' least and greatest codes (or floats), decoded as the
+  // sampler decodes them and widened by one float step each way.
+  static TexelRanges build_texel_ranges(const Texture& texture, const TextureLevel& level) {
+    constexpr std::int32_t kBlock = TexelRanges::kBlock;
+    TexelRanges ranges;
+    ranges.columns = (level.width + kBlock - 1) / kBlock;
+    ranges.rows = (level.height + kBlock - 1) / kBlock;
+    const std::size_t entries = 4 * static_cast<std::size_t>(ranges.columns) * ranges.rows;
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
+    ranges.low.assign(entries, kInfinity);
+    ranges.high.assign(entries, -kInfinity);
+    const bool bytes = texture.format_ == TexelFormat::rgba8;
+    for (std::int32_t y = 0; y < level.height; ++y) {
+      for (std::int32_t x = 0; x < level.width; ++x) {
+        const std::size_t block =
+            4 * (static_cast<std::size_t>(y / kBlock) * ranges.columns + x / kBlock);
+        const std::size_t index = static_cast<std::size_t>(y) * level.width + x;
+        for (int ch = 0; ch < 4; ++ch) {
+          float v;
+          if (bytes) {
+            v = static_cast<float>(
+                reinterpret_cast<const std::uint8_t*>(texture.texels(level))[4 * index + ch]);
+          } else {
+            std::memcpy(&v, texture.texels(level) + 16 * index + 4 * ch, 4);
+          }
+          float& low = ranges.low[block + ch];
+          float& high = ranges.high[block + ch];
+          if (std::isnan(v)) {
+            low = -kInfinity;
+            high = kInfinity;
+          } else if (!(std::isinf(low) && std::isinf(high) && low < high)) {
+            low = std::min(low, v);
+            high = std::max(high, v);
+          }
+        }
+      }
+    }
+    // Codes to linear values (monotonic), then one float step outwards each way.
+    const std::span<const float, 256> srgb = srgb_decode_table();
+    for (std::size_t i = 0; i < entries; ++i) {
+      const int ch = static_cast<int>(i % 4);
+      float& low = ranges.low[i];
+      float& high = ranges.high[i];
+      if (bytes) {
+        const bool decode = texture.encoding_ == ColorEncoding::srgb && ch < 3;
+        const auto linear = [&](float code) {
+          const auto c = static_cast<std::size_t>(code);
+          return decode ? srgb[c] : static_cast<float>(c) / 255.0f;
+        };
+        low = linear(low);
+        high = linear(high);
+      }
+      low = std::nextafter(low, -kInfinity);
+      high = std::nextafter(high, kInfinity);
+    }
+    return ranges;
+  }
+
   TextureBuilder(Texture& texture, TexelFormat format)
       : texture_(texture), texel_bytes_(texel_bytes(format)) {}
 

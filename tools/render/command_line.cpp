@@ -143,6 +143,19 @@ void add_pipeline_options(CLI::App& app, RenderCommandLine& line) {
       "direction towards the light, world space (0,0,0: ambient only)")
       ->type_name("X,Y,Z")
       ->group(kPipelineGroup);
+  tools::add_parsed_option(
+      app, "--error-budget", draw.error_budget,
+      [](const std::string& text) {
+        const float budget = tools::finite_number("--error-budget", text);
+        if (budget < 0.0f) throw UsageError("--error-budget must be at least 0, not " + text);
+        return std::optional(budget);
+      },
+      "the largest difference from the exact methods' colour, in\n"
+      "linear units (1/255 = 0.00392: one 8-bit code); draw() then\n"
+      "shades a triangle or a textured tile in one colour where its\n"
+      "bound allows (default: exact everywhere)")
+      ->type_name("B")
+      ->group(kPipelineGroup);
   tools::add_isa_options(app, line.isa, "default: the best ISA of this CPU (or EDGEWISE_ISA)",
                          "the scalar reference");
   app.get_option("--isa")->group(kPipelineGroup);

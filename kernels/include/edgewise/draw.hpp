@@ -94,6 +94,15 @@ struct DrawOptions {
   float ambient = 0.15f;
   // Multiplies the shaded colour by the filtered texel at each pixel (see the top of this file).
   std::optional<DrawTexture> texture;
+  // The largest difference from the exact methods' colour allowed at any pixel, in linear units
+  // of the written colour (1/255 is one 8-bit code); std::nullopt or 0 draw with the exact
+  // methods. Within it, draw() replaces the plane-equation shading (Gouraud, diffuse) of a
+  // triangle by one colour, and a textured triangle's filtered texels by one colour per 8x8
+  // tile (nearest, bilinear, mip_nearest and trilinear filters), wherever a bound derived from
+  // the triangle's vertices, the texture's ranges and the float32 rounding of the exact path
+  // shows the written 8-bit codes to differ by at most floor(255 budget) (docs/DESIGN.md, "Error
+  // budget"). Multisampled targets are drawn exactly. Throws for a negative or NaN budget.
+  std::optional<float> error_budget;
   // Skip 8x8 tiles whose stored depth the triangle cannot pass anywhere (less and less_equal
   // tests), from a per-tile depth bound the framebuffer keeps. Outcomes are the same either way.
   bool hierarchical_depth = true;
@@ -117,6 +126,9 @@ struct DrawReport {
   std::uint64_t fragments = 0;         // covered samples
   std::uint64_t fragments_passed = 0;  // of those, passing the depth test (and so written)
   std::uint64_t tiles_skipped = 0;     // covered tiles rejected whole by hierarchical depth
+  // Of fragments_passed, those written with one colour per triangle or per tile under
+  // DrawOptions::error_budget.
+  std::uint64_t fragments_constant = 0;
   Isa isa = Isa::reference;
 };
 

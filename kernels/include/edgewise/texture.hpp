@@ -75,6 +75,17 @@ struct SummedAreaTable {
   std::vector<double> sums;
 };
 
+// Per block of kBlock x kBlock texels of one level (the blocks of the last row and column cut
+// by the edges), the least and the greatest linear value of each channel, sRGB decoded and
+// rounded outwards: every filter that reads a level's texels with weights from 0 to 1 lands
+// within the range of the blocks it reads. draw() reads them to bound a texture over a tile
+// under an error budget (draw.hpp). A block holding a NaN texel has the range [-inf, +inf].
+struct TexelRanges {
+  static constexpr std::int32_t kBlock = 8;
+  std::int32_t columns = 0, rows = 0;  // blocks per row and per column
+  std::vector<float> low, high;        // 4 per block: block (i, j) at 4 * (j * columns + i)
+};
+
 // An immutable texture: level 0 and its mipmaps, optionally ripmaps and a summed-area table.
 // Level i + 1 is max(1, floor(w_i / 2)) x max(1, floor(h_i / 2)) down to 1 x 1. Ripmap level (i, j)
 // is mip width i by mip height j, filtered one axis at a time; level (i, i) is mip level i for the
@@ -100,6 +111,10 @@ class Texture {
   int ripmap_columns() const { return static_cast<int>(ripmap_columns_); }
   // Null when not built.
   const SummedAreaTable* summed_area_table() const { return sat_.sums.empty() ? nullptr : &sat_; }
+  // The filter the mipmaps (and ripmaps) were made with.
+  PyramidFilter pyramid_filter() const { return pyramid_; }
+  // Per mip level, always built (1/64 of the texel count in blocks).
+  std::span<const TexelRanges> texel_ranges() const { return ranges_; }
 
   const std::byte* storage() const { return storage_.data(); }
   const std::byte* texels(const TextureLevel& level) const {
@@ -115,6 +130,8 @@ class Texture {
   std::vector<TextureLevel> ripmaps_;
   std::size_t ripmap_columns_ = 0;
   SummedAreaTable sat_;
+  std::vector<TexelRanges> ranges_;
+  PyramidFilter pyramid_ = PyramidFilter::box;
   std::vector<std::byte, detail::TileAlignedAllocator<std::byte>> storage_;
 
   friend class TextureBuilder;  // kernels/src: fills a Texture from level 0

@@ -1,0 +1,512 @@
+// The error budget's choices and bounds (shading_budget.hpp states them).
+#include "shading_budget.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#include "level_of_detail.hpp"
+
+namespace edgewise::detail {
+namespace {
+
+constexpr double kUnit = 0x1p-24;  // float32's unit roundoff
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+
+double clamp01(double v) {
+  return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+}
+
+std::uint32_t to_byte(double v) {
+  return static_cast<std::uint32_t>(std::lrint(clamp01(v) * 255.0));
+}
+
+// The magnitude of a plane's terms as the kernels evaluate it, (f0 + gy dy) + gx dx at a covered
+// pixel (|dx| <= X, |dy| <= Y, the largest |x_i - x_0| and |y_i - y_0|):
+//   M = |f0| + |gx| X + |gy| Y <= |f0| + max(|f1 - f0|, |f2 - f0|) G,
+//   G = ((|y1| + |y2|) X + (|x1| + |x2|) Y) / |area|,
+// from gx = ((f1 - f0) y2 - (f2 - f0) y1) / area and the like (relative to vertex 0). The float
+// evaluation is within 7 u M of the exact plane (tests/draw/colour_bounds.cpp derives it, with M
+// also bounding the double set-up's error). One G serves every plane of the triangle.
+struct PlaneGeometry {
+  double spread = 0.0;  // G; infinite for a zero-area triangle
+};
+
+PlaneGeometry plane_geometry(const Vec2 p[3]) {
+  const double x1 = static_cast<double>(p[1].x) - p[0].x, y1 = static_cast<double>(p[1].y) - p[0].y;
+  const double x2 = static_cast<double>(p[2].x) - p[0].x, y2 = static_cast<double>(p[2].y) - p[0].y;
+  const double area = std::abs(x1 * y2 - y1 * x2);
+  const double reach_x = std::max(std::abs(x1), std::abs(x2));
+  const double reach_y = std::max(std::abs(y1), std::abs(y2));
+  if (!(area > 0.0)) return {kInfinity};
+  return {((std::abs(y1) + std::abs(y2)) * reach_x + (std::abs(x1) + std::abs(x2)) * reach_y) /
+          area};
+}
+
+// M for the plane through f; infinite where the kernels' float plane could leave float's range
+// (snapped offsets are at least 1/256 px, so |gx|, |gy| <= 256 M).
+double plane_magnitude(const PlaneGeometry& g, const double f[3]) {
+  const double m =
+      std::abs(f[0]) + std::max(std::abs(f[1] - f[0]), std::abs(f[2] - f[0])) * g.spread;
+  return m < 0x1p100 ? m : kInfinity;
+}
+
+double dot(const Vec3& a, const Vec3& b) {
+  return static_cast<double>(a.x) * b.x + static_cast<double>(a.y) * b.y +
+         static_cast<double>(a.z) * b.z;
+}
+
+// [a_lo, a_hi] times [b_lo, b_hi].
+void multiply(double a_lo, double a_hi, double b_lo, double b_hi, double& lo, double& hi) {
+  const double p[4] = {a_lo * b_lo, a_lo * b_hi, a_hi * b_lo, a_hi * b_hi};
+  lo = std::min({p[0], p[1], p[2], p[3]});
+  hi = std::max({p[0], p[1], p[2], p[3]});
+}
+
+// The light's interval and the exact path's error on it (times the lit colour's magnitude),
+// for diffuse shading; false where no bound holds.
+struct LightBound {
+  double low, high;  // a + (1 - a) max(0, n . l / |n|) over the triangle
+  double error;      // of max(0, n . l / |n|) in float32, before (1 - a)
+};
+
+bool light_interval(const BudgetTriangle& t, const BudgetState& state, double r_low_out[1],
+                    LightBound& out) {
+  double length[3];
+  double m[3] = {0.0, 0.0, 0.0};
+  for (int i = 0; i < 3; ++i) {
+    length[i] = std::sqrt(dot(t.normal[i], t.normal[i]));
+    if (!(length[i] > 0.0) || !std::isfinite(length[i])) return false;
+    m[0] += t.normal[i].x / length[i];
+    m[1] += t.normal[i].y / length[i];
+    m[2] += t.normal[i].z / length[i];
+  }
+  const double m_length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+  if (!(m_length > 0.0)) return false;
+  double r_low = kInfinity, r_high = 0.0, d_low = kInfinity, d_high = -kInfinity;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& n = t.normal[i];
+    r_low = std::min(r_low, (n.x * m[0] + n.y * m[1] + n.z * m[2]) / m_length);
+    r_high = std::max(r_high, length[i]);
+    const double d = dot(n, state.light);
+    d_low = std::min(d_low, d);
+    d_high = std::max(d_high, d);
+  }
+  // r_low bounds |n| below only where the normals lie within a half space.
+  if (!(r_low > 0.0)) return false;
+  const double facing_high = d_high > 0.0 ? std::min(1.0, d_high / r_low) : d_high / r_high;
+  const double facing_low = d_low >= 0.0 ? d_low / r_high : std::max(-1.0, d_low / r_low);
+  const double a = state.ambient;
+  const double light_a = a + (1.0 - a) * std::max(0.0, facing_low);
+  const double light_b = a + (1.0 - a) * std::max(0.0, facing_high);
+  out.low = std::min(light_a, light_b);
+  out.high = std::max(light_a, light_b);
+  r_low_out[0] = r_low;
+  return std::isfinite(out.low) && std::isfinite(out.high);
+}
+
+bool light_error(const BudgetTriangle& t, const PlaneGeometry& geometry, bool divides,
+                 const double inverse_w[3], double smallest_inverse_w, double r_low,
+                 LightBound& out) {
+  // The normal planes (of n / w when dividing) at the pixel: |p| >= q r_low >= s r_low, off by
+  // |E| at most; the direction then moves by |E| / (|p| - |E|), plus 12 roundings.
+  double error_sq = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    double f[3];
+    for (int i = 0; i < 3; ++i)
+      f[i] = static_cast<double>((&t.normal[i].x)[k]) * inverse_w[i];
+    const double e = 7.0 * kUnit * plane_magnitude(geometry, f);
+    error_sq += e * e;
+  }
+  const double error = std::sqrt(error_sq);
+  const double smallest = (divides ? smallest_inverse_w : 1.0) * r_low;
+  if (!(smallest > 2.0 * error)) return false;
+  out.error = error / (smallest - error) + 12.0 * kUnit;
+  return std::isfinite(out.error);
+}
+
+}  // namespace
+
+int budget_codes(const std::optional<float>& budget) {
+  if (!budget || !(*budget > 0.0f)) return 0;
+  const double codes = std::floor(255.0 * static_cast<double>(*budget));
+  return codes < 255.0 ? static_cast<int>(codes) : 255;
+}
+
+ShadeInterval shade_interval(const BudgetTriangle& t, const BudgetState& state,
+                             double width_limit) {
+  ShadeInterval out;
+  if (state.shading == Shading::flat) {
+    // 255 c in float, one rounding.
+    for (int k = 0; k < 4; ++k) {
+      out.low[k] = out.high[k] = (&t.colour[0].x)[k];
+      out.rounding[k] = 2.0 * kUnit * std::abs(out.low[k]);
+      if (!std::isfinite(out.low[k])) return out;
+    }
+    out.bounded = true;
+    return out;
+  }
+  // The model first: the colours' and the light's ranges, cheap, and often enough to decide.
+  double brightest = 0.0;  // of R, G and B
+  double colour_abs[4];
+  for (int k = 0; k < 4; ++k) {
+    double low = kInfinity, high = -kInfinity;
+    for (int i = 0; i < 3; ++i) {
+      const double c = (&t.colour[i].x)[k];
+      low = std::min(low, c);
+      high = std::max(high, c);
+    }
+    out.low[k] = low;
+    out.high[k] = high;
+    colour_abs[k] = std::max(std::abs(low), std::abs(high));
+    if (k < 3) brightest = std::max(brightest, colour_abs[k]);
+  }
+  LightBound light{};
+  double r_low = 0.0;
+  if (state.shading == Shading::diffuse) {
+    if (!light_interval(t, state, &r_low, light)) return out;
+    for (int k = 0; k < 3; ++k)
+      multiply(out.low[k], out.high[k], light.low, light.high, out.low[k], out.high[k]);
+  }
+  for (int k = 0; k < 4; ++k) {
+    if (!(clamp01(out.high[k]) - clamp01(out.low[k]) < width_limit)) return out;
+  }
+  // Then the exact path's float32 rounding.
+  const PlaneGeometry geometry = plane_geometry(t.position);
+  const bool divides = texture_divides(state.perspective, t.w);
+  double inverse_w[3] = {1.0, 1.0, 1.0};
+  if (divides) {
+    for (int i = 0; i < 3; ++i)
+      inverse_w[i] = 1.0 / t.w[i];
+  }
+  const double s = std::min({inverse_w[0], inverse_w[1], inverse_w[2]});
+  // The plane of 1 / w, kept from falling below s: its error bound as the kernels hold it.
+  double q_error = 0.0;
+  if (divides) {
+    q_error = std::max(7.0 * kUnit * plane_magnitude(geometry, inverse_w), kUnit * s);
+    if (!(s - q_error > 0.0)) return out;
+  }
+  double worst_colour = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    double f[3];
+    for (int i = 0; i < 3; ++i)
+      f[i] = 255.0 * static_cast<double>((&t.colour[i].x)[k]) * inverse_w[i];
+    const double p_error = 7.0 * kUnit * plane_magnitude(geometry, f);
+    double error = p_error;
+    if (divides) {
+      // p / q with |p / q| <= 255 c_abs exactly: worst where q is least, s.
+      const double ratio = (s * 255.0 * colour_abs[k] + p_error) / (s - q_error);
+      error = (p_error + ratio * q_error) / (s - q_error) + 2.0 * kUnit * ratio;
+    }
+    out.rounding[k] = error / 255.0;
+    if (k < 3) worst_colour = std::max(worst_colour, out.rounding[k]);
+  }
+  if (state.shading == Shading::diffuse) {
+    if (!light_error(t, geometry, divides, inverse_w, s, r_low, light)) return out;
+    const double lit_error =
+        (std::abs(1.0 - static_cast<double>(state.ambient)) * light.error + 4.0 * kUnit) *
+        std::max(1.0, brightest + worst_colour);
+    for (int k = 0; k < 3; ++k)
+      out.rounding[k] = worst_colour + lit_error;
+  }
+  bool finite = true;
+  for (int k = 0; k < 4; ++k)
+    finite = finite && std::isfinite(out.low[k]) && std::isfinite(out.high[k]) &&
+             std::isfinite(out.rounding[k]);
+  out.bounded = finite;
+  return out;
+}
+
+std::optional<std::uint32_t> constant_colour(const ShadeInterval& shade, int codes) {
+  if (!shade.bounded || codes <= 0) return std::nullopt;
+  std::uint32_t packed = 0;
+  for (int k = 0; k < 4; ++k) {
+    const double low = clamp01(shade.low[k]), high = clamp01(shade.high[k]);
+    const double error = (high - low) / 2.0 + shade.rounding[k];
+    if (!(255.0 * error < codes)) return std::nullopt;
+    packed |= to_byte((low + high) / 2.0) << (8 * k);
+  }
+  return packed;
+}
+
+namespace {
+
+// A closed range of texel indices on one axis.
+struct IndexRange {
+  std::int64_t first, last;
+};
+
+// Indices on one axis of texels [first, last] of a level `size` texels long, wrapped as the
+// sampler wraps them: at most two ranges.
+int wrapped_ranges(std::int64_t first, std::int64_t last, std::int32_t size, WrapMode wrap,
+                   IndexRange out[2]) {
+  if (last - first + 1 >= size) {
+    out[0] = {0, size - 1};
+    return 1;
+  }
+  if (wrap == WrapMode::repeat) {
+    const std::int64_t a = ((first % size) + size) % size;
+    const std::int64_t b = a + (last - first);
+    if (b < size) {
+      out[0] = {a, b};
+      return 1;
+    }
+    out[0] = {a, size - 1};
+    out[1] = {0, b - size};
+    return 2;
+  }
+  if (wrap == WrapMode::clamp_to_edge) {
+    out[0] = {std::clamp<std::int64_t>(first, 0, size - 1),
+              std::clamp<std::int64_t>(last, 0, size - 1)};
+    return 1;
+  }
+  out[0] = first >= 0 && last < size ? IndexRange{first, last} : IndexRange{0, size - 1};
+  return 1;
+}
+
+// The texel ranges' union over a box of a level, or false past `blocks_left` blocks.
+bool add_box(const TexelRanges& ranges, const IndexRange& x, const IndexRange& y, double low[4],
+             double high[4], int& blocks_left) {
+  const std::int64_t bx0 = x.first / TexelRanges::kBlock, bx1 = x.last / TexelRanges::kBlock;
+  const std::int64_t by0 = y.first / TexelRanges::kBlock, by1 = y.last / TexelRanges::kBlock;
+  blocks_left -= static_cast<int>((bx1 - bx0 + 1) * (by1 - by0 + 1));
+  if (blocks_left < 0) return false;
+  for (std::int64_t by = by0; by <= by1; ++by) {
+    for (std::int64_t bx = bx0; bx <= bx1; ++bx) {
+      const std::size_t at =
+          4 * (static_cast<std::size_t>(by) * ranges.columns + static_cast<std::size_t>(bx));
+      for (int k = 0; k < 4; ++k) {
+        low[k] = std::min(low[k], static_cast<double>(ranges.low[at + k]));
+        high[k] = std::max(high[k], static_cast<double>(ranges.high[at + k]));
+      }
+    }
+  }
+  return true;
+}
+
+// The exact value of a float plane at (dx, dy), in double (within 2^-52 of it relatively).
+double plane_at(const AttributePlane& plane, double dx, double dy) {
+  return static_cast<double>(plane.at_vertex) + static_cast<double>(plane.dy) * dy +
+         static_cast<double>(plane.dx) * dx;
+}
+
+double plane_size(const AttributePlane& plane, double reach_x, double reach_y) {
+  return std::abs(static_cast<double>(plane.at_vertex)) +
+         std::abs(static_cast<double>(plane.dy)) * reach_y +
+         std::abs(static_cast<double>(plane.dx)) * reach_x;
+}
+
+// Where the sampler's coordinates may lie over the tile's pixels, and how large its derivatives
+// may be, from the float planes every path evaluates (texture_planes.hpp).
+struct TileCoordinates {
+  double s_low, s_high, t_low, t_high;
+  double ds[2], dt[2];  // bounds on |ds/dx|, |ds/dy| and |dt/dx|, |dt/dy|
+  double rho_low;       // a lower bound on the sampler's rho, in texels of level 0
+};
+
+bool tile_coordinates(const TexturePlanes& planes, TextureDerivatives derivatives, std::int32_t px,
+                      std::int32_t py, double width, double height, TileCoordinates& out) {
+  // Pixel centres of the tile, relative to the planes' origin (exact in double).
+  const double xs[2] = {px + 0.5 - planes.x0, px + 7.5 - planes.x0};
+  const double ys[2] = {py + 0.5 - planes.y0, py + 7.5 - planes.y0};
+  const double reach_x = std::max(std::abs(xs[0]), std::abs(xs[1]));
+  const double reach_y = std::max(std::abs(ys[0]), std::abs(ys[1]));
+  out.s_low = out.t_low = kInfinity;
+  out.s_high = out.t_high = -kInfinity;
+  double q_low = kInfinity;
+  for (double dx : xs) {
+    for (double dy : ys) {
+      // A projective map over a rectangle where q > 0 throughout (q is a plane, so positive at
+      // the corners is enough) is monotonic along every line: its extremes are at the corners.
+      const double q = planes.divides ? plane_at(planes.q, dx, dy) : 1.0;
+      q_low = std::min(q_low, q);
+      const double s = plane_at(planes.s, dx, dy) / q, t = plane_at(planes.t, dx, dy) / q;
+      out.s_low = std::min(out.s_low, s);
+      out.s_high = std::max(out.s_high, s);
+      out.t_low = std::min(out.t_low, t);
+      out.t_high = std::max(out.t_high, t);
+    }
+  }
+  // The float evaluation: each plane within 5 u of its terms' magnitude (four roundings and the
+  // double evaluation above), 1 / q and the product one rounding each.
+  const double s_size = plane_size(planes.s, reach_x, reach_y);
+  const double t_size = plane_size(planes.t, reach_x, reach_y);
+  double s_error = 5.0 * kUnit * s_size, t_error = 5.0 * kUnit * t_size;
+  double s_abs = s_size, t_abs = t_size;
+  if (planes.divides) {
+    const double q_error = 5.0 * kUnit * plane_size(planes.q, reach_x, reach_y);
+    if (!(q_low > 2.0 * q_error)) return false;
+    s_abs = s_size / q_low;
+    t_abs = t_size / q_low;
+    s_error = (s_error + s_abs * q_error) / (q_low - q_error) + 3.0 * kUnit * 2.0 * s_abs;
+    t_error = (t_error + t_abs * q_error) / (q_low - q_error) + 3.0 * kUnit * 2.0 * t_abs;
+  }
+  out.s_low -= s_error;
+  out.s_high += s_error;
+  out.t_low -= t_error;
+  out.t_high += t_error;
+  // The derivatives of the projective map anywhere in the tile: ds/dx = (dx slope of s/w -
+  // s dx slope of q) / q, and likewise; a quad's difference of two computed values one pixel
+  // apart is the mean of ds/dx between them, off by both values' errors.
+  const double slack = 1.0 + 16.0 * kUnit;
+  const double q_x = planes.divides ? std::abs(static_cast<double>(planes.q.dx)) : 0.0;
+  const double q_y = planes.divides ? std::abs(static_cast<double>(planes.q.dy)) : 0.0;
+  const double inverse = planes.divides ? 1.0 / q_low : 1.0;
+  const bool quad = derivatives == TextureDerivatives::quad;
+  const double s_extra = quad ? 2.0 * s_error : 0.0, t_extra = quad ? 2.0 * t_error : 0.0;
+  out.ds[0] =
+      (std::abs(static_cast<double>(planes.s.dx)) + s_abs * q_x) * inverse * slack + s_extra;
+  out.ds[1] =
+      (std::abs(static_cast<double>(planes.s.dy)) + s_abs * q_y) * inverse * slack + s_extra;
+  out.dt[0] =
+      (std::abs(static_cast<double>(planes.t.dx)) + t_abs * q_x) * inverse * slack + t_extra;
+  out.dt[1] =
+      (std::abs(static_cast<double>(planes.t.dy)) + t_abs * q_y) * inverse * slack + t_extra;
+  // Below: ds/dx = N / q^2 with N = (dx slope of s/w) q - (s/w) (dx slope of q) a plane, so where
+  // N keeps its sign over the tile |ds/dx| >= min |N| / max q^2, both at corners; the quad's
+  // mean of it, less the two values' errors. Every rho is at least the largest of the four.
+  double q_high = 1.0;
+  if (planes.divides) {
+    q_high = 0.0;
+    for (double dx : xs) {
+      for (double dy : ys)
+        q_high = std::max(q_high, plane_at(planes.q, dx, dy));
+    }
+  }
+  const auto least = [&](const AttributePlane& f, bool along_x, double extra) {
+    const double f_slope = along_x ? f.dx : f.dy;
+    const double q_slope = planes.divides ? (along_x ? planes.q.dx : planes.q.dy) : 0.0;
+    double low = kInfinity, high = -kInfinity;
+    for (double dx : xs) {
+      for (double dy : ys) {
+        const double q = planes.divides ? plane_at(planes.q, dx, dy) : 1.0;
+        const double n = f_slope * q - plane_at(f, dx, dy) * q_slope;
+        low = std::min(low, n);
+        high = std::max(high, n);
+      }
+    }
+    const double smallest = low > 0.0 ? low : high < 0.0 ? -high : 0.0;
+    // The corners' own double evaluation: relatively 2^-50 of the terms, taken off generously.
+    return std::max(0.0, smallest / (q_high * q_high) * (1.0 - 0x1p-20) - extra);
+  };
+  out.rho_low =
+      std::max({least(planes.s, true, s_extra) * width, least(planes.t, true, t_extra) * height,
+                least(planes.s, false, s_extra) * width, least(planes.t, false, t_extra) * height});
+  return std::isfinite(out.s_low) && std::isfinite(out.s_high) && std::isfinite(out.t_low) &&
+         std::isfinite(out.t_high) && std::isfinite(out.ds[0] + out.ds[1] + out.dt[0] + out.dt[1]);
+}
+
+// The least and greatest texel over every texel the filter may read in the tile, per channel.
+bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
+                      const SamplerOptions& sampler, double low[4], double high[4]) {
+  const std::span<const TextureLevel> levels = texture.mip_levels();
+  const double width = texture.width(), height = texture.height();
+  int first_level = 0, last_level = 0;
+  if (sampler.filter == TextureFilter::mip_nearest || sampler.filter == TextureFilter::trilinear) {
+    // rho <= the longer of the derivative vectors in texels (the max_axis rho is below it); the
+    // sampler's float log2 and rounding are within 1/64 of a level.
+    const double x = std::hypot(c.ds[0] * width, c.dt[0] * height);
+    const double y = std::hypot(c.ds[1] * width, c.dt[1] * height);
+    const double rho_high = std::max(x, y) * (1.0 + 0x1p-20);
+    const double shift = sampler.lod_bias - kBoxPyramidLodOffset;
+    const double lambda_high = std::log2(rho_high) + shift + 1.0 / 64.0;  // -inf for 0
+    const double lambda_low = std::log2(c.rho_low) + shift - 1.0 / 64.0;
+    const double last = static_cast<double>(levels.size() - 1);
+    // trilinear reads floor(lambda) and the next level; mip_nearest the level nearest lambda.
+    const bool trilinear = sampler.filter == TextureFilter::trilinear;
+    const double top = trilinear ? std::floor(lambda_high) + 1.0 : std::floor(lambda_high + 0.5);
+    const double bottom = trilinear ? std::floor(lambda_low) : std::floor(lambda_low - 0.5);
+    last_level = static_cast<int>(std::clamp(top, 0.0, last));
+    first_level = static_cast<int>(std::clamp(bottom, 0.0, static_cast<double>(last_level)));
+  }
+  constexpr double kLargest = 0x1p30;  // texel indices beyond this: no bound
+  if (!(std::abs(c.s_low) * width < kLargest && std::abs(c.s_high) * width < kLargest &&
+        std::abs(c.t_low) * height < kLargest && std::abs(c.t_high) * height < kLargest))
+    return false;
+  for (int k = 0; k < 4; ++k) {
+    low[k] = kInfinity;
+    high[k] = -kInfinity;
+  }
+  int blocks_left = 64;
+  for (int level = first_level; level <= last_level; ++level) {
+    const TextureLevel& l = levels[static_cast<std::size_t>(level)];
+    // The texels read around s: floor(s W) for nearest, floor(s W - 1/2) and the next for the
+    // bilinear reads.
+    const double offset = sampler.filter == TextureFilter::nearest ? 0.0 : 0.5;
+    const std::int64_t extra = sampler.filter == TextureFilter::nearest ? 0 : 1;
+    const auto first = [&](double v, std::int32_t n) {
+      return static_cast<std::int64_t>(std::floor(v * n - offset));
+    };
+    // One texel more on each side: a fast filter's position is off by up to 2^-21 w texels
+    // (texture_filters-inl.hpp, kPositionError), below one texel.
+    IndexRange xs[2], ys[2];
+    const int nx = wrapped_ranges(first(c.s_low, l.width) - 1, first(c.s_high, l.width) + extra + 1,
+                                  l.width, sampler.wrap_s, xs);
+    const int ny =
+        wrapped_ranges(first(c.t_low, l.height) - 1, first(c.t_high, l.height) + extra + 1,
+                       l.height, sampler.wrap_t, ys);
+    const TexelRanges& ranges = texture.texel_ranges()[static_cast<std::size_t>(level)];
+    for (int i = 0; i < nx; ++i) {
+      for (int j = 0; j < ny; ++j) {
+        if (!add_box(ranges, xs[i], ys[j], low, high, blocks_left)) return false;
+      }
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    if (!std::isfinite(low[k]) || !std::isfinite(high[k])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool texture_tiles_eligible(const Texture& texture, const SamplerOptions& sampler) {
+  (void)texture;
+  switch (sampler.filter) {
+    case TextureFilter::nearest:
+    case TextureFilter::bilinear:
+    case TextureFilter::mip_nearest:
+    case TextureFilter::trilinear:
+      return true;
+    default:
+      return false;
+  }
+}
+
+std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
+                                                   const TexturePlanes& planes,
+                                                   TextureDerivatives derivatives,
+                                                   const Texture& texture,
+                                                   const SamplerOptions& sampler, std::int32_t px,
+                                                   std::int32_t py, int codes) {
+  if (!shade.bounded || codes <= 0) return std::nullopt;
+  TileCoordinates coordinates;
+  if (!tile_coordinates(planes, derivatives, px, py, texture.width(), texture.height(),
+                        coordinates))
+    return std::nullopt;
+  double texel_low[4], texel_high[4];
+  if (!tile_texel_range(coordinates, texture, sampler, texel_low, texel_high)) return std::nullopt;
+  std::uint32_t packed = 0;
+  for (int k = 0; k < 4; ++k) {
+    double low, high;
+    multiply(shade.low[k], shade.high[k], texel_low[k], texel_high[k], low, high);
+    low = clamp01(low);
+    high = clamp01(high);
+    // The exact path: its shaded value within `rounding`, its filtered texel within 16 u of the
+    // texels' range, the product one rounding more.
+    const double texel_abs = std::max(std::abs(texel_low[k]), std::abs(texel_high[k]));
+    const double shade_abs =
+        std::max(std::abs(shade.low[k]), std::abs(shade.high[k])) + shade.rounding[k];
+    const double rounding = shade.rounding[k] * texel_abs * (1.0 + 16.0 * kUnit) +
+                            shade_abs * 16.0 * kUnit * texel_abs +
+                            4.0 * kUnit * shade_abs * texel_abs;
+    const double error = (high - low) / 2.0 + rounding;
+    if (!(255.0 * error < codes)) return std::nullopt;
+    packed |= to_byte((low + high) / 2.0) << (8 * k);
+  }
+  return packed;
+}
+
+}  // namespace edgewise::detail

@@ -1,0 +1,97 @@
+// The choices draw() makes under DrawOptions::error_budget (draw.hpp), and the bounds behind
+// them. One scalar double function per choice, called by every ISA's shading kernel and by the
+// scalar reference with the same inputs, so both make the same choices and write the same
+// colours where they choose (docs/DESIGN.md, "Error budget").
+//
+// The exact colour of a pixel is clamp(shade(p) * texel(p)) per channel, written as
+// round(255 v). The choices replace it by one colour C for a whole triangle, or for a whole 8x8
+// tile of a textured triangle, computed here in double. They are taken only where
+//   255 (|C - exact value| + the exact path's own float32 rounding) < K,   K = floor(255 budget),
+// which makes the written codes differ by at most K (two numbers less than K apart round to
+// integers at most K apart), that is by at most the budget.
+//
+// Why a constant is safe: at a covered pixel centre (inside the triangle) every interpolation
+// weight of draw()'s methods, perspective-correct or not, is in [0, 1] and they sum to 1, so a
+// colour channel lies between the vertices' least and greatest values, and the interpolated
+// normal n is a convex combination of the vertex normals, for which
+//   n . l  in [min_i n_i . l, max_i n_i . l],   |n| <= max_i |n_i|,
+//   |n| >= n . m / |m| >= min_i n_i . m / |m|   with m = sum_i n_i / |n_i|
+// bound the light a + (1 - a) max(0, n . l / |n|). A texture filter that averages texels with
+// weights in [0, 1] (nearest, bilinear, mip_nearest and trilinear of a box pyramid, whose every
+// level averages level 0) lands within the texels it reads: the ranges of Texture::texel_ranges()
+// over the tile's reach bound it. The midpoint of the resulting interval is C, half its width
+// the model error.
+//
+// The exact path's rounding: the float32 plane evaluation of draw()'s plane-equation path
+// (shade-inl.hpp), each plane within 7 u M of its exact value (u = 2^-24, M the sum of the
+// magnitudes of its terms at the farthest vertex), carried through the perspective division and
+// the light as the draw tests' bounds carry them (tests/draw/colour_bounds.cpp), and a filtered
+// texel within 16 u of its texels' range. Triangles outside these bounds (slivers whose planes
+// lose their digits, w outside the interpolators' range, huge or non-finite values) keep the
+// exact method.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "edgewise/draw.hpp"
+#include "texture_planes.hpp"
+
+namespace edgewise::detail {
+
+// The codes a budget allows, K = floor(255 budget) clamped to [0, 255]; 0 without a budget.
+int budget_codes(const std::optional<float>& budget);
+
+// What a triangle's shading needs for the choices: its vertices as the kernels receive them.
+struct BudgetTriangle {
+  Vec2 position[3];  // snapped screen positions
+  double w[3];       // clip-space w
+  Vec4 colour[3];
+  Vec3 normal[3];  // diffuse only
+};
+
+struct BudgetState {
+  Shading shading;
+  Perspective perspective;
+  Vec3 light;  // unit length
+  float ambient;
+};
+
+// Each channel's exact shaded value (before any texture) over the triangle's covered pixel
+// centres lies in [low, high]; the exact path's float32 value within `rounding` of it.
+struct ShadeInterval {
+  bool bounded = false;  // false: no bound; the triangle keeps the exact methods
+  double low[4]{}, high[4]{};
+  double rounding[4]{};
+};
+
+// The interval of a triangle shaded by plane equations (Gouraud or diffuse; flat gives the first
+// vertex's colour). Unbounded, without the cost of the rounding bound, where a channel's clamped
+// interval is not narrower than `width_limit`.
+ShadeInterval shade_interval(const BudgetTriangle& triangle, const BudgetState& state,
+                             double width_limit);
+
+// The width_limit of shade_interval() for an untextured triangle: wider intervals cannot give
+// one colour within K codes.
+inline double untextured_width_limit(int codes) {
+  return 2.0 * codes / 255.0;
+}
+
+// The packed RGBA8 colour that replaces the shading of an untextured triangle within K codes,
+// or nothing.
+std::optional<std::uint32_t> constant_colour(const ShadeInterval& shade, int codes);
+
+// Whether the sampler's filter and the texture allow constant_texture_tile() at all.
+bool texture_tiles_eligible(const Texture& texture, const SamplerOptions& sampler);
+
+// The packed colour that replaces shade times texel over the pixels of the tile with top-left
+// pixel (px, py) of a textured triangle with the given texture planes, within K codes, or
+// nothing. Needs texture_tiles_eligible().
+std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
+                                                   const TexturePlanes& planes,
+                                                   TextureDerivatives derivatives,
+                                                   const Texture& texture,
+                                                   const SamplerOptions& sampler, std::int32_t px,
+                                                   std::int32_t py, int codes);
+
+}  // namespace edgewise::detail
