@@ -31,6 +31,10 @@ void register_textured_draw_benchmarks();
 // (mesh_scenes.hpp), when built with the OBJ loader.
 void register_mesh_draw_benchmarks();
 
+// BudgetDraw/<isa>/<scene>/<exact|budget:1/255>: the demo's scenes drawn exactly and within an
+// error budget of one code, when built with the procedural scenes and the texture scenes.
+void register_budget_draw_benchmarks();
+
 // DrawPeer/llvmpipe/<threads:1|threads:default>/<workload>: Mesa's llvmpipe drawing the Shading/
 // workloads (also into 4- and 8-sample targets, as Multisample/), the trilinear TexturedDraw/ one
 // and the MeshDraw/ meshes, when built with EGL and OpenGL.

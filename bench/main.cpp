@@ -28,6 +28,9 @@ int main(int argc, char** argv) {
 #if defined(EDGEWISE_BENCH_MESHES)
   edgewise::bench::register_mesh_draw_benchmarks();
 #endif
+#if defined(EDGEWISE_BENCH_BUDGET)
+  edgewise::bench::register_budget_draw_benchmarks();
+#endif
 #if defined(EDGEWISE_BENCH_LLVMPIPE)
   edgewise::bench::register_draw_peer_benchmarks();
 #endif

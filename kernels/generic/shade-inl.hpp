@@ -27,6 +27,7 @@
 #include "interpolation-inl.hpp"
 #include "method_interpolator-inl.hpp"
 #include "plane_setup-inl.hpp"
+#include "budget_prefilter-inl.hpp"
 #include "sample_walk-inl.hpp"
 #include "simd_ops-inl.hpp"
 #include "texture_tile-inl.hpp"
@@ -59,7 +60,7 @@ class ShadingVisitor {
         // Model no more than the scene needs: Gouraud colour by plane equations interpolates the
         // colours (and diffuse the normals) directly, and then, untextured, needs nothing per
         // triangle beyond the planes.
-        needs_vertices_(textured_ || !colour_planes_ || batch.budget_codes > 0),
+        needs_vertices_(textured_ || !colour_planes_),
         // Under an error budget (shading_budget.hpp): the triangles whose shading it bounds, and
         // whether textured tiles may take one colour.
         budget_codes_(batch.budget_codes),
@@ -105,6 +106,10 @@ class ShadingVisitor {
     }
     set_up_plane_group(in, colour_planes_, normal_planes_,
                        batch_.perspective == Perspective::correct, group_);
+    if (budget_shading_ && !textured_) {
+      mark_beyond_budget(in, normal_planes_, batch_.light, batch_.ambient,
+                         detail::untextured_width_limit(budget_codes_), beyond_budget_);
+    }
   }
 
   // Triangle t, lane l of the last begin_group().
@@ -123,7 +128,10 @@ class ShadingVisitor {
           plane_[k] = group_.colour[k][l];
       }
     }
-    if (needs_vertices_) begin_triangle_from_vertices(t);
+    // Under a budget, an untextured triangle is looked at closer unless its vertices already
+    // rule one colour out.
+    constant_ = false;
+    if (needs_vertices_ || (budget_shading_ && !beyond_budget_[l])) begin_triangle_from_vertices(t);
   }
 
   // What the group's planes leave out: normals, texture planes, flat colour and the other
@@ -1083,6 +1091,7 @@ class ShadingVisitor {
   bool constant_ = false;  // untextured, drawn in one colour
   std::uint32_t constant_colour_ = 0;
   detail::TexturePlanes texture_planes_{};
+  bool beyond_budget_[kSetupLanes<Arch>]{};  // of the current group (mark_beyond_budget())
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
   float min_inverse_w_ = 1.0f;  // the plane of 1 / w's floor (PlaneGroup::min_inverse_w)

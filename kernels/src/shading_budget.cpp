@@ -74,6 +74,18 @@ struct LightBound {
 
 bool light_interval(const BudgetTriangle& t, const BudgetState& state, double r_low_out[1],
                     LightBound& out) {
+  const auto same = [](const Vec3& a, const Vec3& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+  };
+  if (same(t.normal[0], t.normal[1]) && same(t.normal[0], t.normal[2])) {
+    // One normal: one light (the general bounds below would give it too, with more work).
+    const double length = std::sqrt(dot(t.normal[0], t.normal[0]));
+    if (!(length > 0.0) || !std::isfinite(length)) return false;
+    const double a = state.ambient;
+    out.low = out.high = a + (1.0 - a) * std::max(0.0, dot(t.normal[0], state.light) / length);
+    r_low_out[0] = length;
+    return std::isfinite(out.low);
+  }
   double length[3];
   double m[3] = {0.0, 0.0, 0.0};
   for (int i = 0; i < 3; ++i) {
@@ -188,6 +200,7 @@ ShadeInterval shade_interval(const BudgetTriangle& t, const BudgetState& state,
     q_error = std::max(7.0 * kUnit * plane_magnitude(geometry, inverse_w), kUnit * s);
     if (!(s - q_error > 0.0)) return out;
   }
+  const double inverse_margin = divides ? 1.0 / (s - q_error) : 1.0;
   double worst_colour = 0.0;
   for (int k = 0; k < 4; ++k) {
     double f[3];
@@ -197,8 +210,8 @@ ShadeInterval shade_interval(const BudgetTriangle& t, const BudgetState& state,
     double error = p_error;
     if (divides) {
       // p / q with |p / q| <= 255 c_abs exactly: worst where q is least, s.
-      const double ratio = (s * 255.0 * colour_abs[k] + p_error) / (s - q_error);
-      error = (p_error + ratio * q_error) / (s - q_error) + 2.0 * kUnit * ratio;
+      const double ratio = (s * 255.0 * colour_abs[k] + p_error) * inverse_margin;
+      error = (p_error + ratio * q_error) * inverse_margin + 2.0 * kUnit * ratio;
     }
     out.rounding[k] = error / 255.0;
     if (k < 3) worst_colour = std::max(worst_colour, out.rounding[k]);
@@ -266,9 +279,11 @@ int wrapped_ranges(std::int64_t first, std::int64_t last, std::int32_t size, Wra
   return 1;
 }
 
-// The texel ranges' union over a box of a level, or false past `blocks_left` blocks.
+// The texel ranges' union over a box of a level; false past `blocks_left` blocks, or once a
+// channel's range is wider than its `widest` (a tile that cannot take one colour: the caller
+// gives up early, which both the kernels and the reference do alike).
 bool add_box(const TexelRanges& ranges, const IndexRange& x, const IndexRange& y, double low[4],
-             double high[4], int& blocks_left) {
+             double high[4], const double widest[4], int& blocks_left) {
   const std::int64_t bx0 = x.first / TexelRanges::kBlock, bx1 = x.last / TexelRanges::kBlock;
   const std::int64_t by0 = y.first / TexelRanges::kBlock, by1 = y.last / TexelRanges::kBlock;
   blocks_left -= static_cast<int>((bx1 - bx0 + 1) * (by1 - by0 + 1));
@@ -281,6 +296,9 @@ bool add_box(const TexelRanges& ranges, const IndexRange& x, const IndexRange& y
         low[k] = std::min(low[k], static_cast<double>(ranges.low[at + k]));
         high[k] = std::max(high[k], static_cast<double>(ranges.high[at + k]));
       }
+    }
+    for (int k = 0; k < 4; ++k) {
+      if (high[k] - low[k] > widest[k]) return false;
     }
   }
   return true;
@@ -316,13 +334,20 @@ bool tile_coordinates(const TexturePlanes& planes, TextureDerivatives derivative
   out.s_low = out.t_low = kInfinity;
   out.s_high = out.t_high = -kInfinity;
   double q_low = kInfinity;
+  // The planes' values at the corners (q, s/w, t/w).
+  double corner_q[4], corner_s[4], corner_t[4];
+  int corner = 0;
   for (double dx : xs) {
     for (double dy : ys) {
       // A projective map over a rectangle where q > 0 throughout (q is a plane, so positive at
       // the corners is enough) is monotonic along every line: its extremes are at the corners.
       const double q = planes.divides ? plane_at(planes.q, dx, dy) : 1.0;
       q_low = std::min(q_low, q);
-      const double s = plane_at(planes.s, dx, dy) / q, t = plane_at(planes.t, dx, dy) / q;
+      corner_q[corner] = q;
+      corner_s[corner] = plane_at(planes.s, dx, dy);
+      corner_t[corner] = plane_at(planes.t, dx, dy);
+      const double s = corner_s[corner] / q, t = corner_t[corner] / q;
+      ++corner;
       out.s_low = std::min(out.s_low, s);
       out.s_high = std::max(out.s_high, s);
       out.t_low = std::min(out.t_low, t);
@@ -367,48 +392,45 @@ bool tile_coordinates(const TexturePlanes& planes, TextureDerivatives derivative
   // Below: ds/dx = N / q^2 with N = (dx slope of s/w) q - (s/w) (dx slope of q) a plane, so where
   // N keeps its sign over the tile |ds/dx| >= min |N| / max q^2, both at corners; the quad's
   // mean of it, less the two values' errors. Every rho is at least the largest of the four.
-  double q_high = 1.0;
-  if (planes.divides) {
-    q_high = 0.0;
-    for (double dx : xs) {
-      for (double dy : ys)
-        q_high = std::max(q_high, plane_at(planes.q, dx, dy));
-    }
-  }
-  const auto least = [&](const AttributePlane& f, bool along_x, double extra) {
+  const double q_high = std::max({corner_q[0], corner_q[1], corner_q[2], corner_q[3]});
+  const auto least = [&](const AttributePlane& f, const double* values, bool along_x,
+                         double extra) {
     const double f_slope = along_x ? f.dx : f.dy;
     const double q_slope = planes.divides ? (along_x ? planes.q.dx : planes.q.dy) : 0.0;
     double low = kInfinity, high = -kInfinity;
-    for (double dx : xs) {
-      for (double dy : ys) {
-        const double q = planes.divides ? plane_at(planes.q, dx, dy) : 1.0;
-        const double n = f_slope * q - plane_at(f, dx, dy) * q_slope;
-        low = std::min(low, n);
-        high = std::max(high, n);
-      }
+    for (int c = 0; c < 4; ++c) {
+      // N at the corner, give or take its double evaluation (the planes' values within 2^-50
+      // of their terms, the products and the difference a few roundings more).
+      const double a = f_slope * corner_q[c], b = values[c] * q_slope;
+      const double error = 0x1p-46 * (std::abs(a) + std::abs(b));
+      low = std::min(low, a - b - error);
+      high = std::max(high, a - b + error);
     }
     const double smallest = low > 0.0 ? low : high < 0.0 ? -high : 0.0;
-    // The corners' own double evaluation: relatively 2^-50 of the terms, taken off generously.
-    return std::max(0.0, smallest / (q_high * q_high) * (1.0 - 0x1p-20) - extra);
+    return std::max(0.0, smallest / (q_high * q_high) * (1.0 - 0x1p-40) - extra);
   };
-  out.rho_low =
-      std::max({least(planes.s, true, s_extra) * width, least(planes.t, true, t_extra) * height,
-                least(planes.s, false, s_extra) * width, least(planes.t, false, t_extra) * height});
+  out.rho_low = std::max({least(planes.s, corner_s, true, s_extra) * width,
+                          least(planes.t, corner_t, true, t_extra) * height,
+                          least(planes.s, corner_s, false, s_extra) * width,
+                          least(planes.t, corner_t, false, t_extra) * height});
   return std::isfinite(out.s_low) && std::isfinite(out.s_high) && std::isfinite(out.t_low) &&
          std::isfinite(out.t_high) && std::isfinite(out.ds[0] + out.ds[1] + out.dt[0] + out.dt[1]);
 }
 
 // The least and greatest texel over every texel the filter may read in the tile, per channel.
 bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
-                      const SamplerOptions& sampler, double low[4], double high[4]) {
+                      const SamplerOptions& sampler, const double widest[4], double low[4],
+                      double high[4]) {
   const std::span<const TextureLevel> levels = texture.mip_levels();
   const double width = texture.width(), height = texture.height();
   int first_level = 0, last_level = 0;
   if (sampler.filter == TextureFilter::mip_nearest || sampler.filter == TextureFilter::trilinear) {
     // rho <= the longer of the derivative vectors in texels (the max_axis rho is below it); the
     // sampler's float log2 and rounding are within 1/64 of a level.
-    const double x = std::hypot(c.ds[0] * width, c.dt[0] * height);
-    const double y = std::hypot(c.ds[1] * width, c.dt[1] * height);
+    const double x =
+        std::sqrt(c.ds[0] * width * c.ds[0] * width + c.dt[0] * height * c.dt[0] * height);
+    const double y =
+        std::sqrt(c.ds[1] * width * c.ds[1] * width + c.dt[1] * height * c.dt[1] * height);
     const double rho_high = std::max(x, y) * (1.0 + 0x1p-20);
     const double shift = sampler.lod_bias - kBoxPyramidLodOffset;
     const double lambda_high = std::log2(rho_high) + shift + 1.0 / 64.0;  // -inf for 0
@@ -429,8 +451,9 @@ bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
     low[k] = kInfinity;
     high[k] = -kInfinity;
   }
-  int blocks_left = 64;
-  for (int level = first_level; level <= last_level; ++level) {
+  int blocks_left = 32;
+  // Coarsest first: its box is the smallest, and an edge there rejects the tile soonest.
+  for (int level = last_level; level >= first_level; --level) {
     const TextureLevel& l = levels[static_cast<std::size_t>(level)];
     // The texels read around s: floor(s W) for nearest, floor(s W - 1/2) and the next for the
     // bilinear reads.
@@ -450,7 +473,7 @@ bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
     const TexelRanges& ranges = texture.texel_ranges()[static_cast<std::size_t>(level)];
     for (int i = 0; i < nx; ++i) {
       for (int j = 0; j < ny; ++j) {
-        if (!add_box(ranges, xs[i], ys[j], low, high, blocks_left)) return false;
+        if (!add_box(ranges, xs[i], ys[j], low, high, widest, blocks_left)) return false;
       }
     }
   }
@@ -487,7 +510,18 @@ std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
                         coordinates))
     return std::nullopt;
   double texel_low[4], texel_high[4];
-  if (!tile_texel_range(coordinates, texture, sampler, texel_low, texel_high)) return std::nullopt;
+  // A texel range wider than 2 K / 255 over the least shade magnitude makes the product wider
+  // than one colour allows (where the shade keeps its sign; clamping could only narrow it, and
+  // giving up is always allowed).
+  double widest[4];
+  for (int k = 0; k < 4; ++k) {
+    const double least = shade.low[k] > 0.0    ? shade.low[k]
+                         : shade.high[k] < 0.0 ? -shade.high[k]
+                                               : 0.0;
+    widest[k] = least > 0.0 ? 2.0 * codes / 255.0 / least : kInfinity;
+  }
+  if (!tile_texel_range(coordinates, texture, sampler, widest, texel_low, texel_high))
+    return std::nullopt;
   std::uint32_t packed = 0;
   for (int k = 0; k < 4; ++k) {
     double low, high;

@@ -215,4 +215,15 @@ Scene default_scene() {
   return {std::move(mesh), camera};
 }
 
+Scene ground_scene() {
+  return {make_ground_plane(
+              {.color_a = {0.8f, 0.8f, 0.75f, 1.0f}, .color_b = {0.25f, 0.25f, 0.3f, 1.0f}}),
+          {.eye = {0.0f, 1.7f, 6.0f},
+           .target = {0.0f, 0.6f, -10.0f},
+           .up = {0.0f, 1.0f, 0.0f},
+           .vertical_fov_degrees = 60.0f,
+           .near_plane = 0.1f,
+           .far_plane = 500.0f}};
+}
+
 }  // namespace edgewise::scene

@@ -86,4 +86,9 @@ struct Scene {
 //   near 0.1, far 500.
 Scene default_scene();
 
+// The ground plane alone to the horizon, as the demo textures it: the eye 1.7 units above a plane
+// reaching 250 units out (its far edge 0.4 degrees below the horizon, where the cells shrink
+// below a pixel), uv = (x, z) / 4.
+Scene ground_scene();
+
 }  // namespace edgewise::scene
