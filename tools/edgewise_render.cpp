@@ -2,6 +2,8 @@
 // (PNG or EXR) and prints what the pipeline did: triangles at each stage, fragments, and the time
 // of each stage. --compare-isas checks every ISA against the scalar reference on the same frame;
 // --texture textures the mesh, and --each-filter renders the frame once per texture filter.
+// --compare-budget B renders the frame without and with DrawOptions::error_budget B and checks
+// that the two images differ by at most the codes the budget allows.
 // --aa msaaN or ssaaN draws into a multisampled or a larger target and resolves it (resolve.hpp)
 // before writing; the resolve is timed apart from the frame.
 //
@@ -11,6 +13,7 @@
 #include <array>
 #include <bit>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <iomanip>
@@ -253,7 +256,7 @@ void print_counts(const DrawReport& report) {
   print_count("constant", report.fragments_constant, "fragments given one colour under the budget");
 }
 
-// ---- The three modes: one frame, --compare-isas, --each-filter --------------------------------
+// ---- The modes: one frame, --compare-isas, --each-filter, --compare-budget ---------------------
 
 int render(const RenderSettings& settings, const LoadedScene& loaded, const DrawMesh& mesh,
            const ResolvedCamera& camera, const TextureInUse* texture, double load_seconds,
@@ -458,6 +461,117 @@ int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded
   return 0;
 }
 
+// --repeat frames without and with the budget, interleaved (exact, budget, exact, ...) so that
+// whatever else slows the machine slows both alike; the two framebuffers hold the last of each.
+struct InterleavedFrames {
+  std::vector<double> exact_seconds, budget_seconds;  // one per frame
+  DrawReport exact_report, budget_report;             // every frame of each counts the same
+};
+
+InterleavedFrames render_interleaved(Framebuffer& exact_target, Framebuffer& budget_target,
+                                     const DrawMesh& mesh, const DrawOptions& exact,
+                                     const DrawOptions& budgeted, int repeat) {
+  InterleavedFrames frames;
+  // One untimed frame of each first: the first frame of a run also pays for the threads' start
+  // and cold caches, which would fall on the exact frames alone.
+  frames.exact_report = render_frames(exact_target, mesh, exact, 1).report;
+  frames.budget_report = render_frames(budget_target, mesh, budgeted, 1).report;
+  for (int r = 0; r < repeat; ++r) {
+    const FrameTimes e = render_frames(exact_target, mesh, exact, 1);
+    const FrameTimes b = render_frames(budget_target, mesh, budgeted, 1);
+    if (!same_counts(e.report, frames.exact_report) ||
+        !same_counts(b.report, frames.budget_report) ||
+        b.report.fragments_constant != frames.budget_report.fragments_constant) {
+      throw std::logic_error("draw() counted differently on two identical frames");
+    }
+    frames.exact_seconds.push_back(e.frame);
+    frames.budget_seconds.push_back(b.frame);
+  }
+  return frames;
+}
+
+// The codes a budget lets a colour differ by, as draw.hpp promises them: floor(255 B), at most 255.
+int promised_codes(float budget) {
+  const double codes = std::floor(255.0 * static_cast<double>(budget));
+  return codes < 255.0 ? static_cast<int>(codes) : 255;
+}
+
+std::string codes_text(int codes) {
+  return std::to_string(codes) + (codes == 1 ? " code" : " codes");
+}
+
+std::string fixed_text(double value, int digits) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << value;
+  return out.str();
+}
+
+// --compare-budget: the frame without and with settings.compare_budget, their times, and the
+// check: the last two images differ by at most the budget's codes in any channel of any pixel,
+// their depth values and counts not at all.
+int compare_budget(const RenderSettings& settings, const LoadedScene& loaded, const DrawMesh& mesh,
+                   const ResolvedCamera& camera, const TextureInUse* texture) {
+  DrawOptions exact = draw_options(settings, camera, texture);
+  exact.isa = tools::tool_isa(exact.isa);
+  DrawOptions budgeted = exact;
+  budgeted.error_budget = settings.compare_budget;
+  const int allowed = promised_codes(*settings.compare_budget);
+  print_setup(loaded, settings, camera, texture, "ISA " + std::string(name_of(*exact.isa)));
+  std::cout << "  budget    " << *settings.compare_budget << " (" << codes_text(allowed)
+            << "), against the exact methods\n";
+
+  Framebuffer exact_target = make_framebuffer(settings), budget_target = make_framebuffer(settings);
+  const InterleavedFrames frames =
+      render_interleaved(exact_target, budget_target, mesh, exact, budgeted, settings.repeat);
+  print_counts(frames.budget_report);
+
+  const std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
+  std::vector<std::uint8_t> exact_rgba(4 * pixels), budget_rgba(4 * pixels);
+  std::vector<float> exact_depth(pixels), budget_depth(pixels);
+  read_every_sample(exact_target, exact_rgba, exact_depth);
+  read_every_sample(budget_target, budget_rgba, budget_depth);
+  const Difference d = compare_images(budget_rgba, budget_depth, exact_rgba, exact_depth);
+  const bool counts_match = same_counts(frames.budget_report, frames.exact_report);
+
+  const double exact_median = median(frames.exact_seconds);
+  const double budget_median = median(frames.budget_seconds);
+  const auto fastest = [](const std::vector<double>& seconds) {
+    return "fastest frame " + milliseconds(*std::min_element(seconds.begin(), seconds.end()));
+  };
+  const std::uint64_t written = frames.budget_report.fragments_passed;
+  const std::uint64_t constant = frames.budget_report.fragments_constant;
+  const double share =
+      written > 0 ? 100.0 * static_cast<double>(constant) / static_cast<double>(written) : 0.0;
+  std::cout << "without and with the budget (median of " << settings.repeat
+            << (settings.repeat == 1 ? " frame" : " frames")
+            << " each, interleaved, after one untimed pair)\n";
+  print_time("exact frame", exact_median, fastest(frames.exact_seconds));
+  print_time("budget frame", budget_median, fastest(frames.budget_seconds));
+  print_row("ratio", fixed_text(exact_median / budget_median, 3),
+            "exact / budget: above 1, the budget is faster");
+  print_count("constant", constant, fixed_text(share, 1) + "% of the fragments written");
+  print_row("largest difference", codes_text(d.max_colour_codes),
+            "any channel, any pixel, last images; the budget allows " + std::to_string(allowed));
+  print_count("pixels differing", d.colour_pixels, "of " + std::to_string(pixels));
+  print_count("depth mismatches", d.depth_mismatches);
+  if (settings.output) {
+    const std::string exact_path = path_with_suffix(*settings.output, "-exact");
+    const std::string budget_path = path_with_suffix(*settings.output, "-budget");
+    const auto write_start = Clock::now();
+    write_image(exact_path, exact_target);
+    write_image(budget_path, budget_target);
+    print_time("image write", seconds_since(write_start), exact_path + ", " + budget_path);
+  }
+
+  const bool within = d.max_colour_codes <= allowed;
+  const bool ok = within && d.depth_mismatches == 0 && counts_match;
+  std::cout << "compare-budget: check " << (ok ? "passed" : "FAILED") << ": largest difference "
+            << codes_text(d.max_colour_codes) << (within ? ", within " : ", BEYOND ") << "the "
+            << allowed << " the budget allows; " << d.depth_mismatches
+            << " depth mismatches; counts " << (counts_match ? "identical" : "DIFFERENT") << '\n';
+  return ok ? 0 : 1;
+}
+
 int run(const RenderSettings& settings) {
   const auto start = Clock::now();
   const LoadedScene loaded = load_scene(settings);
@@ -482,6 +596,7 @@ int run(const RenderSettings& settings) {
   const TextureInUse* in_use = texture ? &*texture : nullptr;
   const DrawMesh mesh = draw_mesh_of(loaded.mesh, in_use != nullptr);
   if (settings.compare_isas) return compare_isas(settings, loaded, mesh, camera, in_use);
+  if (settings.compare_budget) return compare_budget(settings, loaded, mesh, camera, in_use);
   if (in_use != nullptr && in_use->settings.each_filter) {
     return render_each_filter(settings, loaded, mesh, camera, *in_use);
   }

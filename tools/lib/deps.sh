@@ -13,9 +13,9 @@
 
 # shellcheck disable=SC2034 # the lists are read by the scripts that source this file
 
-# tools/demo: a Release build of the library and the tools, then edgewise-render and
-# edgewise-demo.
-EDGEWISE_DEMO_PACKAGES=(
+# The Release build of the library and the tools (tools/lib/tools_build.sh) that tools/demo and
+# tools/edgewise-atlas start with, and the check's host build too.
+EDGEWISE_TOOLS_PACKAGES=(
   g++                  # GCC 12, the C++20 compiler, with binutils (linker, objdump, nm)
   cmake                # the build system (3.22 or newer)
   ninja-build          # the generator the scripts configure with
@@ -27,21 +27,25 @@ EDGEWISE_DEMO_PACKAGES=(
   libcli11-dev         # CLI11: every tool parses its command line with it
 )
 
-# tools/edgewise-atlas: the demo's build, the study program (timed with Google Benchmark) and
+# tools/edgewise-atlas: the tools' build, the study program (timed with Google Benchmark) and
 # the charts.
 EDGEWISE_ATLAS_PACKAGES=(
-  "${EDGEWISE_DEMO_PACKAGES[@]}"
+  "${EDGEWISE_TOOLS_PACKAGES[@]}"
   libbenchmark-dev   # Google Benchmark: the studies time their methods with the benchmarks' harness
   python3-matplotlib # draws the atlas's charts (tools/atlas/plot_atlas.py)
 )
+
+# tools/demo: the tools' build, edgewise-render, edgewise-strokes and edgewise-demo, and last the
+# method atlas's quick run (tools/edgewise-atlas, which installs the same list).
+EDGEWISE_DEMO_PACKAGES=("${EDGEWISE_ATLAS_PACKAGES[@]}")
 
 # tools/check, stage by stage.
 EDGEWISE_CHECK_FORMAT_PACKAGES=(
   clang-format # the format stage's formatter (clang-format 14)
 )
-# The host build is the demo's build plus the test suite and the benchmarks.
+# The host build is the tools' build plus the test suite and the benchmarks.
 EDGEWISE_CHECK_HOST_PACKAGES=(
-  "${EDGEWISE_DEMO_PACKAGES[@]}"
+  "${EDGEWISE_TOOLS_PACKAGES[@]}"
   libgtest-dev     # GoogleTest: the test suite
   libbenchmark-dev # Google Benchmark: edgewise-bench, built with everything else
   libegl-dev       # EGL (headers, libEGL): llvmpipe for edgewise-bench's DrawPeer/ and tests/peer

@@ -73,6 +73,13 @@ void parse_size(std::string_view text, RenderSettings& settings) {
   }
 }
 
+// An error budget (draw.hpp): a finite number, at least 0.
+float parse_budget(const std::string& option, const std::string& text) {
+  const float budget = tools::finite_number(option, text);
+  if (budget < 0.0f) throw UsageError(option + " must be at least 0, not " + text);
+  return budget;
+}
+
 void add_camera_options(CLI::App& app, CameraOverrides& camera) {
   add_vector_option(app, "--eye", camera.eye, "where the camera is")->group(kCameraGroup);
   add_vector_option(app, "--target", camera.target, "the point it looks at")->group(kCameraGroup);
@@ -145,11 +152,7 @@ void add_pipeline_options(CLI::App& app, RenderCommandLine& line) {
       ->group(kPipelineGroup);
   tools::add_parsed_option(
       app, "--error-budget", draw.error_budget,
-      [](const std::string& text) {
-        const float budget = tools::finite_number("--error-budget", text);
-        if (budget < 0.0f) throw UsageError("--error-budget must be at least 0, not " + text);
-        return std::optional(budget);
-      },
+      [](const std::string& text) { return std::optional(parse_budget("--error-budget", text)); },
       "the largest difference from the exact methods' colour, in\n"
       "linear units (1/255 = 0.00392: one 8-bit code); draw() then\n"
       "shades a triangle or a textured tile in one colour where its\n"
@@ -249,6 +252,16 @@ void add_running_options(CLI::App& app, RenderSettings& settings) {
                "(--repeat times); report depth mismatches and colour differences;\n"
                "exit status 1 if any depth value or count differs")
       ->group(kRunningGroup);
+  tools::add_parsed_option(
+      app, "--compare-budget", settings.compare_budget,
+      [](const std::string& text) { return std::optional(parse_budget("--compare-budget", text)); },
+      "render --repeat frames without and --repeat with --error-budget B,\n"
+      "interleaved; report both median frame times, the constant\n"
+      "fragments and the largest difference between the last two images;\n"
+      "exit status 1 if it exceeds floor(255 B) codes or any depth value\n"
+      "or count differs; -o FILE.png writes FILE-exact.png, FILE-budget.png")
+      ->type_name("B")
+      ->group(kRunningGroup);
 }
 
 }  // namespace
@@ -293,6 +306,11 @@ RenderSettings checked_settings(const CLI::App& app, RenderCommandLine line) {
   }
   if (settings.compare_isas && (line.isa || settings.output || line.texture.each_filter)) {
     throw UsageError("--compare-isas takes no --isa, --reference, -o or --each-filter");
+  }
+  if (settings.compare_budget && (settings.compare_isas || line.texture.each_filter ||
+                                  settings.aa.enabled() || settings.draw.error_budget)) {
+    throw UsageError(
+        "--compare-budget takes no --compare-isas, --each-filter, --aa or --error-budget");
   }
   if (app.count("--resolve") > 0 && !settings.aa.enabled()) {
     throw UsageError("--resolve needs --aa msaaN or ssaaN");

@@ -84,6 +84,7 @@ struct RenderSettings {
   int repeat = 1;
   std::optional<std::string> output;  // -o
   bool compare_isas = false;
+  std::optional<float> compare_budget;  // --compare-budget B
 };
 
 inline constexpr int kMaxRepeat = 10000;
