@@ -143,7 +143,9 @@ bool light_error(const BudgetTriangle& t, const PlaneGeometry& geometry, bool di
 
 int budget_codes(const std::optional<float>& budget) {
   if (!budget || !(*budget > 0.0f)) return 0;
-  const double codes = std::floor(255.0 * static_cast<double>(*budget));
+  // A budget within 2^-20 of k / 255 counts as k codes: 1/255 written as a decimal or as float
+  // often lands a hair below it.
+  const double codes = std::floor(255.0 * static_cast<double>(*budget) * (1.0 + 0x1p-20));
   return codes < 255.0 ? static_cast<int>(codes) : 255;
 }
 
@@ -279,22 +281,33 @@ int wrapped_ranges(std::int64_t first, std::int64_t last, std::int32_t size, Wra
   return 1;
 }
 
-// The texel ranges' union over a box of a level; false past `blocks_left` blocks, or once a
+// The texel ranges' union over a box of a level: over its blocks when it spans at most 2 x 2 of
+// them, else over the coarse cells that hold it. False past 3 x 3 coarse cells, or once a
 // channel's range is wider than its `widest` (a tile that cannot take one colour: the caller
 // gives up early, which both the kernels and the reference do alike).
 bool add_box(const TexelRanges& ranges, const IndexRange& x, const IndexRange& y, double low[4],
-             double high[4], const double widest[4], int& blocks_left) {
-  const std::int64_t bx0 = x.first / TexelRanges::kBlock, bx1 = x.last / TexelRanges::kBlock;
-  const std::int64_t by0 = y.first / TexelRanges::kBlock, by1 = y.last / TexelRanges::kBlock;
-  blocks_left -= static_cast<int>((bx1 - bx0 + 1) * (by1 - by0 + 1));
-  if (blocks_left < 0) return false;
-  for (std::int64_t by = by0; by <= by1; ++by) {
-    for (std::int64_t bx = bx0; bx <= bx1; ++bx) {
-      const std::size_t at =
-          4 * (static_cast<std::size_t>(by) * ranges.columns + static_cast<std::size_t>(bx));
+             double high[4], const double widest[4]) {
+  std::int64_t x0 = x.first / TexelRanges::kBlock, x1 = x.last / TexelRanges::kBlock;
+  std::int64_t y0 = y.first / TexelRanges::kBlock, y1 = y.last / TexelRanges::kBlock;
+  const float* lows = ranges.low.data();
+  const float* highs = ranges.high.data();
+  std::int64_t columns = ranges.columns;
+  if (x1 - x0 > 1 || y1 - y0 > 1) {
+    x0 /= TexelRanges::kCoarse;
+    x1 /= TexelRanges::kCoarse;
+    y0 /= TexelRanges::kCoarse;
+    y1 /= TexelRanges::kCoarse;
+    if (x1 - x0 > 2 || y1 - y0 > 2) return false;
+    lows = ranges.coarse_low.data();
+    highs = ranges.coarse_high.data();
+    columns = ranges.coarse_columns;
+  }
+  for (std::int64_t by = y0; by <= y1; ++by) {
+    for (std::int64_t bx = x0; bx <= x1; ++bx) {
+      const std::size_t at = 4 * static_cast<std::size_t>(by * columns + bx);
       for (int k = 0; k < 4; ++k) {
-        low[k] = std::min(low[k], static_cast<double>(ranges.low[at + k]));
-        high[k] = std::max(high[k], static_cast<double>(ranges.high[at + k]));
+        low[k] = std::min(low[k], static_cast<double>(lows[at + k]));
+        high[k] = std::max(high[k], static_cast<double>(highs[at + k]));
       }
     }
     for (int k = 0; k < 4; ++k) {
@@ -451,7 +464,6 @@ bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
     low[k] = kInfinity;
     high[k] = -kInfinity;
   }
-  int blocks_left = 32;
   // Coarsest first: its box is the smallest, and an edge there rejects the tile soonest.
   for (int level = last_level; level >= first_level; --level) {
     const TextureLevel& l = levels[static_cast<std::size_t>(level)];
@@ -473,7 +485,7 @@ bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
     const TexelRanges& ranges = texture.texel_ranges()[static_cast<std::size_t>(level)];
     for (int i = 0; i < nx; ++i) {
       for (int j = 0; j < ny; ++j) {
-        if (!add_box(ranges, xs[i], ys[j], low, high, widest, blocks_left)) return false;
+        if (!add_box(ranges, xs[i], ys[j], low, high, widest)) return false;
       }
     }
   }

@@ -39,7 +39,8 @@
 
 namespace edgewise::detail {
 
-// The codes a budget allows, K = floor(255 budget) clamped to [0, 255]; 0 without a budget.
+// The codes a budget allows, K = floor(255 budget (1 + 2^-20)) clamped to [0, 255]; 0 without a
+// budget.
 int budget_codes(const std::optional<float>& budget);
 
 // What a triangle's shading needs for the choices: its vertices as the kernels receive them.

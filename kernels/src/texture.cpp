@@ -108,59 +108,93 @@ class TextureBuilder {
 
  private:
   // TexelRanges of a level: the blocks' least and greatest codes (or floats), decoded as the
-  // sampler decodes them and widened by one float step each way.
+  // sampler decodes them and widened by one float step each way; then the coarse cells' from
+  // their blocks'.
   static TexelRanges build_texel_ranges(const Texture& texture, const TextureLevel& level) {
     constexpr std::int32_t kBlock = TexelRanges::kBlock;
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
     TexelRanges ranges;
     ranges.columns = (level.width + kBlock - 1) / kBlock;
     ranges.rows = (level.height + kBlock - 1) / kBlock;
-    const std::size_t entries = 4 * static_cast<std::size_t>(ranges.columns) * ranges.rows;
-    constexpr float kInfinity = std::numeric_limits<float>::infinity();
-    ranges.low.assign(entries, kInfinity);
-    ranges.high.assign(entries, -kInfinity);
-    const bool bytes = texture.format_ == TexelFormat::rgba8;
-    for (std::int32_t y = 0; y < level.height; ++y) {
-      for (std::int32_t x = 0; x < level.width; ++x) {
-        const std::size_t block =
-            4 * (static_cast<std::size_t>(y / kBlock) * ranges.columns + x / kBlock);
-        const std::size_t index = static_cast<std::size_t>(y) * level.width + x;
-        for (int ch = 0; ch < 4; ++ch) {
-          float v;
-          if (bytes) {
-            v = static_cast<float>(
-                reinterpret_cast<const std::uint8_t*>(texture.texels(level))[4 * index + ch]);
-          } else {
-            std::memcpy(&v, texture.texels(level) + 16 * index + 4 * ch, 4);
+    const std::size_t blocks = static_cast<std::size_t>(ranges.columns) * ranges.rows;
+    ranges.low.assign(4 * blocks, kInfinity);
+    ranges.high.assign(4 * blocks, -kInfinity);
+    if (texture.format_ == TexelFormat::rgba8) {
+      std::vector<std::uint8_t> low(4 * blocks, 255), high(4 * blocks, 0);
+      const auto* codes = reinterpret_cast<const std::uint8_t*>(texture.texels(level));
+      for (std::int32_t y = 0; y < level.height; ++y) {
+        const std::uint8_t* row = codes + 4 * static_cast<std::size_t>(y) * level.width;
+        const std::size_t first_block = static_cast<std::size_t>(y / kBlock) * ranges.columns;
+        for (std::int32_t bx = 0; bx < ranges.columns; ++bx) {
+          // The block's part of this row, channel by channel in registers.
+          const std::int32_t end = std::min(level.width, (bx + 1) * kBlock);
+          std::uint8_t* block_low = &low[4 * (first_block + static_cast<std::size_t>(bx))];
+          std::uint8_t* block_high = &high[4 * (first_block + static_cast<std::size_t>(bx))];
+          std::uint8_t lo[4], hi[4];
+          for (int ch = 0; ch < 4; ++ch) {
+            lo[ch] = block_low[ch];
+            hi[ch] = block_high[ch];
           }
-          float& low = ranges.low[block + ch];
-          float& high = ranges.high[block + ch];
-          if (std::isnan(v)) {
-            low = -kInfinity;
-            high = kInfinity;
-          } else if (!(std::isinf(low) && std::isinf(high) && low < high)) {
-            low = std::min(low, v);
-            high = std::max(high, v);
+          for (std::int32_t x = bx * kBlock; x < end; ++x) {
+            for (int ch = 0; ch < 4; ++ch) {
+              lo[ch] = std::min(lo[ch], row[4 * x + ch]);
+              hi[ch] = std::max(hi[ch], row[4 * x + ch]);
+            }
+          }
+          for (int ch = 0; ch < 4; ++ch) {
+            block_low[ch] = lo[ch];
+            block_high[ch] = hi[ch];
           }
         }
       }
-    }
-    // Codes to linear values (monotonic), then one float step outwards each way.
-    const std::span<const float, 256> srgb = srgb_decode_table();
-    for (std::size_t i = 0; i < entries; ++i) {
-      const int ch = static_cast<int>(i % 4);
-      float& low = ranges.low[i];
-      float& high = ranges.high[i];
-      if (bytes) {
-        const bool decode = texture.encoding_ == ColorEncoding::srgb && ch < 3;
-        const auto linear = [&](float code) {
-          const auto c = static_cast<std::size_t>(code);
-          return decode ? srgb[c] : static_cast<float>(c) / 255.0f;
+      const std::span<const float, 256> srgb = srgb_decode_table();
+      for (std::size_t i = 0; i < 4 * blocks; ++i) {
+        const bool decode = texture.encoding_ == ColorEncoding::srgb && i % 4 < 3;
+        const auto linear = [&](std::uint8_t code) {
+          return decode ? srgb[code] : static_cast<float>(code) / 255.0f;
         };
-        low = linear(low);
-        high = linear(high);
+        ranges.low[i] = std::nextafter(linear(low[i]), -kInfinity);
+        ranges.high[i] = std::nextafter(linear(high[i]), kInfinity);
       }
-      low = std::nextafter(low, -kInfinity);
-      high = std::nextafter(high, kInfinity);
+    } else {
+      std::vector<bool> has_nan(4 * blocks, false);
+      for (std::int32_t y = 0; y < level.height; ++y) {
+        const std::size_t first_block = static_cast<std::size_t>(y / kBlock) * ranges.columns;
+        for (std::int32_t x = 0; x < level.width; ++x) {
+          const std::size_t at = 4 * (first_block + static_cast<std::size_t>(x / kBlock));
+          float v[4];
+          std::memcpy(
+              v, texture.texels(level) + 16 * (static_cast<std::size_t>(y) * level.width + x), 16);
+          for (int ch = 0; ch < 4; ++ch) {
+            if (std::isnan(v[ch])) has_nan[at + ch] = true;
+            ranges.low[at + ch] = std::fmin(ranges.low[at + ch], v[ch]);
+            ranges.high[at + ch] = std::fmax(ranges.high[at + ch], v[ch]);
+          }
+        }
+      }
+      for (std::size_t i = 0; i < 4 * blocks; ++i) {
+        ranges.low[i] = has_nan[i] ? -kInfinity : std::nextafter(ranges.low[i], -kInfinity);
+        ranges.high[i] = has_nan[i] ? kInfinity : std::nextafter(ranges.high[i], kInfinity);
+      }
+    }
+    // Coarse cells: kCoarse x kCoarse blocks each.
+    constexpr std::int32_t kCoarse = TexelRanges::kCoarse;
+    ranges.coarse_columns = (ranges.columns + kCoarse - 1) / kCoarse;
+    ranges.coarse_rows = (ranges.rows + kCoarse - 1) / kCoarse;
+    const std::size_t cells = static_cast<std::size_t>(ranges.coarse_columns) * ranges.coarse_rows;
+    ranges.coarse_low.assign(4 * cells, kInfinity);
+    ranges.coarse_high.assign(4 * cells, -kInfinity);
+    for (std::int32_t by = 0; by < ranges.rows; ++by) {
+      for (std::int32_t bx = 0; bx < ranges.columns; ++bx) {
+        const std::size_t from = 4 * (static_cast<std::size_t>(by) * ranges.columns + bx);
+        const std::size_t to =
+            4 * (static_cast<std::size_t>(by / kCoarse) * ranges.coarse_columns + bx / kCoarse);
+        for (int ch = 0; ch < 4; ++ch) {
+          ranges.coarse_low[to + ch] = std::min(ranges.coarse_low[to + ch], ranges.low[from + ch]);
+          ranges.coarse_high[to + ch] =
+              std::max(ranges.coarse_high[to + ch], ranges.high[from + ch]);
+        }
+      }
     }
     return ranges;
   }

@@ -155,6 +155,69 @@ TEST(Texture, NonFiniteFloatTexelsAreStoredAsGiven) {
 
 // IEC 61966-2-1: the two pieces meet (within their published rounding), the functions invert
 // each other, and the table is srgb_to_linear rounded once to float.
+// Every texel of every level lies within its block's range and its coarse cell's, and each
+// block's bounds are attained within one float step (8-bit: decoded; float: a NaN makes the
+// block's range everything).
+void expect_ranges_hold(const Texture& texture) {
+  ASSERT_EQ(texture.texel_ranges().size(), texture.mip_levels().size());
+  for (std::size_t i = 0; i < texture.mip_levels().size(); ++i) {
+    const TextureLevel& level = texture.mip_levels()[i];
+    const TexelRanges& r = texture.texel_ranges()[i];
+    ASSERT_EQ(r.columns, (level.width + 7) / 8);
+    ASSERT_EQ(r.rows, (level.height + 7) / 8);
+    std::vector<float> seen_low(r.low.size(), std::numeric_limits<float>::infinity());
+    std::vector<float> seen_high(r.high.size(), -std::numeric_limits<float>::infinity());
+    std::vector<bool> nan(r.low.size(), false);
+    for (std::int32_t y = 0; y < level.height; ++y) {
+      for (std::int32_t x = 0; x < level.width; ++x) {
+        float v[4];
+        texture.linear_texel(level, x, y, v);
+        const std::size_t block = 4 * (static_cast<std::size_t>(y / 8) * r.columns + x / 8);
+        const std::size_t cell = 4 * (static_cast<std::size_t>(y / 32) * r.coarse_columns + x / 32);
+        for (int k = 0; k < 4; ++k) {
+          if (std::isnan(v[k])) {
+            nan[block + k] = true;
+            continue;
+          }
+          EXPECT_LE(r.low[block + k], v[k]);
+          EXPECT_GE(r.high[block + k], v[k]);
+          EXPECT_LE(r.coarse_low[cell + k], v[k]);
+          EXPECT_GE(r.coarse_high[cell + k], v[k]);
+          seen_low[block + k] = std::min(seen_low[block + k], v[k]);
+          seen_high[block + k] = std::max(seen_high[block + k], v[k]);
+        }
+      }
+    }
+    for (std::size_t b = 0; b < r.low.size(); ++b) {
+      if (nan[b]) {
+        EXPECT_EQ(r.low[b], -std::numeric_limits<float>::infinity());
+        EXPECT_EQ(r.high[b], std::numeric_limits<float>::infinity());
+      } else {
+        EXPECT_EQ(r.low[b], std::nextafter(seen_low[b], -INFINITY)) << "level " << i;
+        EXPECT_EQ(r.high[b], std::nextafter(seen_high[b], INFINITY)) << "level " << i;
+      }
+    }
+  }
+}
+
+TEST(Texture, TexelRangesBoundEveryLevel) {
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(53) * 37 * 4);
+  std::uint32_t state = 12345;
+  for (std::uint8_t& b : bytes) {
+    state = state * 1664525u + 1013904223u;
+    b = static_cast<std::uint8_t>(state >> 24);
+  }
+  for (ColorEncoding encoding : {ColorEncoding::linear, ColorEncoding::srgb}) {
+    for (PyramidFilter filter : {PyramidFilter::box, PyramidFilter::lanczos3})
+      expect_ranges_hold(Texture::from_rgba8(53, 37, bytes, encoding, {filter}));
+  }
+  std::vector<float> floats(static_cast<std::size_t>(40) * 24 * 4);
+  for (std::size_t i = 0; i < floats.size(); ++i)
+    floats[i] = static_cast<float>((i * 2654435761u) % 1000) / 250.0f - 1.0f;
+  floats[4 * (9 * 40 + 17) + 2] = std::numeric_limits<float>::quiet_NaN();
+  expect_ranges_hold(Texture::from_rgba32f(40, 24, floats));
+}
+
 TEST(Srgb, TransferFunctionsAndTable) {
   EXPECT_EQ(srgb_to_linear(0.0), 0.0);
   EXPECT_EQ(srgb_to_linear(1.0), 1.0);

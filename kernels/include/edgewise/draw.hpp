@@ -101,7 +101,8 @@ struct DrawOptions {
   // tile (nearest, bilinear, mip_nearest and trilinear filters), wherever a bound derived from
   // the triangle's vertices, the texture's ranges and the float32 rounding of the exact path
   // shows the written 8-bit codes to differ by at most floor(255 budget) (docs/DESIGN.md, "Error
-  // budget"). Multisampled targets are drawn exactly. Throws for a negative or NaN budget.
+  // budget"); a budget within 2^-20 of k/255 counts as k codes. Multisampled targets are drawn
+  // exactly. Throws for a negative or NaN budget.
   std::optional<float> error_budget;
   // Skip 8x8 tiles whose stored depth the triangle cannot pass anywhere (less and less_equal
   // tests), from a per-tile depth bound the framebuffer keeps. Outcomes are the same either way.

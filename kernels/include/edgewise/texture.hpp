@@ -84,6 +84,10 @@ struct TexelRanges {
   static constexpr std::int32_t kBlock = 8;
   std::int32_t columns = 0, rows = 0;  // blocks per row and per column
   std::vector<float> low, high;        // 4 per block: block (i, j) at 4 * (j * columns + i)
+  // The same over coarse cells of kCoarse x kCoarse blocks, for wide regions.
+  static constexpr std::int32_t kCoarse = 4;
+  std::int32_t coarse_columns = 0, coarse_rows = 0;
+  std::vector<float> coarse_low, coarse_high;
 };
 
 // An immutable texture: level 0 and its mipmaps, optionally ripmaps and a summed-area table.
