@@ -1228,6 +1228,44 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   return 0;
 }
 
+// DrawOptions::error_budget of two codes: every ISA within two codes of its own exact image at
+// every sample, with the same depth, and the reference's choices (its count of fragments given
+// one colour).
+void check_budget(const Case& c, std::span<const Output> exact) {
+  Case budgeted = c;
+  budgeted.options.error_budget = 2.0f / 255.0f;
+  const std::vector<Output> outputs = draw_every_isa(budgeted, budgeted.mesh());
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const Output& got = outputs[i];
+    const Output& want = exact[i];
+    if (got.threw) fail(budgeted, "draw() threw under an error budget", outputs, got.error);
+    if (got.report.fragments_constant != outputs.front().report.fragments_constant) {
+      fail(budgeted, "an ISA's error-budget choices differ from the reference's", outputs,
+           std::string(name_of(got.isa)));
+    }
+    const std::size_t values = static_cast<std::size_t>(got.target.tiles_x()) *
+                               static_cast<std::size_t>(got.target.tiles_y()) * 64 *
+                               static_cast<std::size_t>(got.target.samples());
+    for (std::size_t v = 0; v < values; ++v) {
+      const std::uint32_t a = got.target.color_tiles()[v], b = want.target.color_tiles()[v];
+      for (int k = 0; k < 4; ++k) {
+        const int da =
+            static_cast<int>(a >> (8 * k) & 0xFF) - static_cast<int>(b >> (8 * k) & 0xFF);
+        if (da > 2 || da < -2) {
+          fail(budgeted, "the error budget's image leaves the budget", outputs,
+               std::string(name_of(got.isa)) + ": " + hex(a) + " against " + hex(b) +
+                   " at storage index " + std::to_string(v));
+        }
+      }
+      const float za = got.target.depth_tiles()[v], zb = want.target.depth_tiles()[v];
+      if (!(za == zb || (std::isnan(za) && std::isnan(zb)))) {
+        fail(budgeted, "the error budget changed depth", outputs,
+             std::string(name_of(got.isa)) + " at storage index " + std::to_string(v));
+      }
+    }
+  }
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const Case c = decode({data, size});
   ++stats.inputs;
@@ -1261,6 +1299,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ++stats.invalid;
     return 0;
   }
+  if (c.width > 0 && c.height > 0) check_budget(c, whole);
 
   // The texture's extremes, scanned once (the options are valid here).
   std::optional<test::TexturedPixelCheck> textured_check;

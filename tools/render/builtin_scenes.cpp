@@ -10,7 +10,6 @@ namespace {
 // The default scene's palette, so that each part looks the same alone and together.
 constexpr Vec4 kWarmTop{1.0f, 0.75f, 0.3f, 1.0f}, kWarmBottom{0.75f, 0.2f, 0.1f, 1.0f};
 constexpr Vec4 kCoolA{0.2f, 0.5f, 0.95f, 1.0f}, kCoolB{0.2f, 0.9f, 0.55f, 1.0f};
-constexpr Vec4 kLightCell{0.8f, 0.8f, 0.75f, 1.0f}, kDarkCell{0.25f, 0.25f, 0.3f, 1.0f};
 
 scene::Scene sphere_scene() {
   return {scene::make_uv_sphere({.center = {0.0f, 0.0f, 0.0f},
@@ -44,25 +43,13 @@ scene::Scene torus_scene() {
            .far_plane = 100.0f}};
 }
 
-// The eye 1.7 units above a plane reaching 250 units out: its far edge lies 0.4 degrees below
-// the horizon, where the cells shrink below a pixel.
-scene::Scene ground_scene() {
-  return {scene::make_ground_plane({.color_a = kLightCell, .color_b = kDarkCell}),
-          {.eye = {0.0f, 1.7f, 6.0f},
-           .target = {0.0f, 0.6f, -10.0f},
-           .up = {0.0f, 1.0f, 0.0f},
-           .vertical_fov_degrees = 60.0f,
-           .near_plane = 0.1f,
-           .far_plane = 500.0f}};
-}
-
 }  // namespace
 
 scene::Scene make_builtin_scene(std::string_view name) {
   if (name == "default") return scene::default_scene();
   if (name == "sphere") return sphere_scene();
   if (name == "torus") return torus_scene();
-  if (name == "ground") return ground_scene();
+  if (name == "ground") return scene::ground_scene();
   throw std::invalid_argument("no built-in scene '" + std::string(name) + "'");
 }
 
