@@ -564,9 +564,7 @@ class ShadingVisitor {
                                          const ColumnTerms& columns,
                                          const float (*colour_row_bases)[kTileSize],
                                          Floats& stored_max) {
-    if (constant_)
-      return shade_constant_rows<Test>(mask, rows, depth, color, py, columns, stored_max);
-    if (colour_planes_ && batch_.depth_write) {
+    if (colour_planes_ && batch_.depth_write && !constant_) {
       if (normal_planes_) {
         return shade_planar_choice<Test, RowTermsPerRow, true>(
             mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
@@ -576,7 +574,7 @@ class ShadingVisitor {
     }
     alignas(64) float row_bases[kPlanes][kTileSize];
     if constexpr (RowTermsPerRow) {
-      if (colour_planes_) set_up_colour_rows(py, row_bases);
+      if (colour_planes_ && !constant_) set_up_colour_rows(py, row_bases);
       colour_row_bases = row_bases;
     }
     shade_rows_generic<Test>(mask, rows, depth, color, px, py, columns, colour_row_bases,
@@ -681,6 +679,13 @@ class ShadingVisitor {
       for (std::size_t h = 0; h < kParts; ++h) {
         const Mask write =
             depth_step<Test>(depth, row, h, row_base, columns.depth[h], row_mask, stored_max);
+        if (constant_) {
+          // One colour under the error budget.
+          write_colour(color, row, h, write, Ints(static_cast<std::int32_t>(constant_colour_)));
+          constant_fragments_ +=
+              static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
+          continue;
+        }
         const Ints new_color = colour_planes_
                                    ? planar_colour(colour_row_bases, columns, row, h)
                                    : shade(px + static_cast<std::int32_t>(h * kLanes) - origin_x_,
@@ -725,29 +730,6 @@ class ShadingVisitor {
       for (std::size_t h = 0; h < kParts; ++h) {
         write_colour(color, row, h, writes[row][h], packed);
         written += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(writes[row][h])));
-      }
-    }
-    constant_fragments_ += written;
-  }
-
-  // Untextured rows of a triangle the budget gives one colour: the depth test, then the colour
-  // where it passed.
-  template <DepthTest Test>
-  [[gnu::always_inline]] void shade_constant_rows(std::uint64_t mask, std::uint32_t rows,
-                                                  float* depth, std::uint32_t* color,
-                                                  std::int32_t py, const ColumnTerms& columns,
-                                                  Floats& stored_max) {
-    const Ints packed(static_cast<std::int32_t>(constant_colour_));
-    std::uint64_t written = 0;
-    for (; rows != 0; rows &= rows - 1) {
-      const int row = std::countr_zero(rows);
-      const std::uint32_t row_mask = static_cast<std::uint32_t>(mask >> (8 * row)) & 0xFF;
-      const Floats row_base(detail::depth_row_base(depth_, py + row));
-      for (std::size_t h = 0; h < kParts; ++h) {
-        const Mask write =
-            depth_step<Test>(depth, row, h, row_base, columns.depth[h], row_mask, stored_max);
-        write_colour(color, row, h, write, packed);
-        written += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
       }
     }
     constant_fragments_ += written;

@@ -13,7 +13,6 @@ namespace {
 
 constexpr double kUnit = 0x1p-24;  // float32's unit roundoff
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kFloatMax = std::numeric_limits<float>::max();
 
 double clamp01(double v) {
   return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
