@@ -12,6 +12,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,7 +36,7 @@ struct BudgetScene {
 };
 
 Mat4 camera_transform(const scene::SceneCamera& c) {
-  const float fov = c.vertical_fov_degrees * 3.14159265358979f / 180.0f;
+  const float fov = c.vertical_fov_degrees * std::numbers::pi_v<float> / 180.0f;
   return perspective(fov, float(kBudgetWidth) / float(kBudgetHeight), c.near_plane, c.far_plane) *
          look_at(c.eye, c.target, c.up);
 }

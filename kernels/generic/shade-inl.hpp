@@ -63,12 +63,8 @@ class ShadingVisitor {
         needs_vertices_(textured_ || !colour_planes_),
         // Under an error budget (shading_budget.hpp): the triangles whose shading it bounds, and
         // whether textured tiles may take one colour.
-        budget_codes_(batch.budget_codes),
-        budget_shading_(budget_codes_ > 0 &&
-                        (colour_planes_ || (textured_ && batch.shading == Shading::flat))),
-        budget_tiles_(budget_shading_ && textured_ &&
-                      detail::texture_tiles_eligible(*batch.texture, batch.sampler)),
-        budget_state_{batch.shading, batch.perspective, batch.light, batch.ambient},
+        budget_shading_(detail::budget_shades(batch)),
+        budget_tiles_(detail::budget_tiles(batch)),
         pattern_(batch.coverage.samples),
         sample_reach_(sample_reach(pattern_)) {
     for (std::size_t k = 0; k < pattern_.size() && k < kMaxSamples; ++k) {
@@ -108,7 +104,7 @@ class ShadingVisitor {
                        batch_.perspective == Perspective::correct, group_);
     if (budget_shading_ && !textured_) {
       mark_beyond_budget(in, normal_planes_, batch_.light, batch_.ambient,
-                         detail::untextured_width_limit(budget_codes_), beyond_budget_);
+                         detail::untextured_width_limit(batch_.budget_codes), beyond_budget_);
     }
   }
 
@@ -708,8 +704,7 @@ class ShadingVisitor {
         depth_test_rows(mask, rows, depth, py, columns, stored_max, writes);
     if (written_rows != 0 && budget_tiles_ && shade_interval_.bounded) {
       const std::optional<std::uint32_t> constant =
-          detail::constant_texture_tile(shade_interval_, texture_planes_, batch_.derivatives,
-                                        *batch_.texture, batch_.sampler, px, py, budget_codes_);
+          detail::constant_texture_tile(shade_interval_, texture_planes_, batch_, px, py);
       if (constant) return write_constant_rows(written_rows, color, writes, *constant);
     }
     if (written_rows != 0) {
@@ -886,13 +881,10 @@ class ShadingVisitor {
       triangle.colour[i] = color_[i];
       triangle.normal[i] = normal_[i];
     }
-    const double width_limit = textured_ ? std::numeric_limits<double>::infinity()
-                                         : detail::untextured_width_limit(budget_codes_);
-    shade_interval_ = detail::shade_interval(triangle, budget_state_, width_limit);
-    constant_ = false;
+    shade_interval_ = detail::shade_interval(triangle, batch_);
     if (!textured_) {
       const std::optional<std::uint32_t> colour =
-          detail::constant_colour(shade_interval_, budget_codes_);
+          detail::constant_colour(shade_interval_, batch_.budget_codes);
       constant_ = colour.has_value();
       constant_colour_ = colour.value_or(0u);
     }
@@ -1058,9 +1050,7 @@ class ShadingVisitor {
   const bool keep_bounds_, reject_hidden_;
   const bool textured_;
   const bool needs_vertices_;  // begin_triangle() reads the vertices for more than the planes
-  const int budget_codes_;
   const bool budget_shading_, budget_tiles_;
-  const detail::BudgetState budget_state_;
   // The current group's planes and triangle.
   PlaneGroup<Arch> group_{};
   detail::DepthPlane depth_{};

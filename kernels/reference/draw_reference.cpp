@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <span>
 
@@ -153,14 +152,9 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
       texture_planes = detail::make_texture_planes(p, uv, w, batch.perspective);
     }
     // The error budget's choices (shading_budget.hpp), made from the same inputs as the kernels'.
-    const bool plane_shading =
-        batch.shading == Shading::gouraud || batch.shading == Shading::diffuse;
-    const bool budget_shading =
-        batch.budget_codes > 0 &&
-        (plane_shading || (batch.texture != nullptr && batch.shading == Shading::flat));
     detail::ShadeInterval interval;
     std::optional<std::uint32_t> constant;
-    if (budget_shading) {
+    if (detail::budget_shades(batch)) {
       detail::BudgetTriangle budget_triangle;
       for (int i = 0; i < 3; ++i) {
         budget_triangle.position[i] = c[i].position;
@@ -168,17 +162,11 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
         budget_triangle.colour[i] = c[i].color;
         budget_triangle.normal[i] = c[i].normal;
       }
-      const double width_limit = batch.texture != nullptr
-                                     ? std::numeric_limits<double>::infinity()
-                                     : detail::untextured_width_limit(batch.budget_codes);
-      interval = detail::shade_interval(
-          budget_triangle, {batch.shading, batch.perspective, batch.light, batch.ambient},
-          width_limit);
+      interval = detail::shade_interval(budget_triangle, batch);
       if (batch.texture == nullptr)
         constant = detail::constant_colour(interval, batch.budget_codes);
     }
-    const bool budget_tiles = budget_shading && batch.texture != nullptr && interval.bounded &&
-                              detail::texture_tiles_eligible(*batch.texture, batch.sampler);
+    const bool budget_tiles = detail::budget_tiles(batch) && interval.bounded;
     const PixelRect box = candidate_pixels(tri, batch.coverage.clip);
     for (std::int32_t py = box.y0; py < box.y1; ++py) {
       for (std::int32_t px = box.x0; px < box.x1; ++px) {
@@ -200,9 +188,8 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
         if (!any_passed) continue;
         std::optional<std::uint32_t> budget_colour = constant;
         if (budget_tiles) {
-          budget_colour = detail::constant_texture_tile(interval, texture_planes, batch.derivatives,
-                                                        *batch.texture, batch.sampler, px & ~7,
-                                                        py & ~7, batch.budget_codes);
+          budget_colour =
+              detail::constant_texture_tile(interval, texture_planes, batch, px & ~7, py & ~7);
         }
         std::array<double, 4> rgba = shaded_colour(batch, c, px + 0.5, py + 0.5);
         if (batch.texture != nullptr && !budget_colour) {

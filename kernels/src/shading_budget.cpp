@@ -71,7 +71,7 @@ struct LightBound {
   double error;      // of max(0, n . l / |n|) in float32, before (1 - a)
 };
 
-bool light_interval(const BudgetTriangle& t, const BudgetState& state, double r_low_out[1],
+bool light_interval(const BudgetTriangle& t, const ShadeBatch& batch, double& r_low,
                     LightBound& out) {
   const auto same = [](const Vec3& a, const Vec3& b) {
     return a.x == b.x && a.y == b.y && a.z == b.z;
@@ -80,9 +80,9 @@ bool light_interval(const BudgetTriangle& t, const BudgetState& state, double r_
     // One normal: one light (the general bounds below would give it too, with more work).
     const double length = std::sqrt(dot(t.normal[0], t.normal[0]));
     if (!(length > 0.0) || !std::isfinite(length)) return false;
-    const double a = state.ambient;
-    out.low = out.high = a + (1.0 - a) * std::max(0.0, dot(t.normal[0], state.light) / length);
-    r_low_out[0] = length;
+    const double a = batch.ambient;
+    out.low = out.high = a + (1.0 - a) * std::max(0.0, dot(t.normal[0], batch.light) / length);
+    r_low = length;
     return std::isfinite(out.low);
   }
   double length[3];
@@ -96,12 +96,13 @@ bool light_interval(const BudgetTriangle& t, const BudgetState& state, double r_
   }
   const double m_length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
   if (!(m_length > 0.0)) return false;
-  double r_low = kInfinity, r_high = 0.0, d_low = kInfinity, d_high = -kInfinity;
+  double r_high = 0.0, d_low = kInfinity, d_high = -kInfinity;
+  r_low = kInfinity;
   for (int i = 0; i < 3; ++i) {
     const Vec3& n = t.normal[i];
     r_low = std::min(r_low, (n.x * m[0] + n.y * m[1] + n.z * m[2]) / m_length);
     r_high = std::max(r_high, length[i]);
-    const double d = dot(n, state.light);
+    const double d = dot(n, batch.light);
     d_low = std::min(d_low, d);
     d_high = std::max(d_high, d);
   }
@@ -109,12 +110,11 @@ bool light_interval(const BudgetTriangle& t, const BudgetState& state, double r_
   if (!(r_low > 0.0)) return false;
   const double facing_high = d_high > 0.0 ? std::min(1.0, d_high / r_low) : d_high / r_high;
   const double facing_low = d_low >= 0.0 ? d_low / r_high : std::max(-1.0, d_low / r_low);
-  const double a = state.ambient;
+  const double a = batch.ambient;
   const double light_a = a + (1.0 - a) * std::max(0.0, facing_low);
   const double light_b = a + (1.0 - a) * std::max(0.0, facing_high);
   out.low = std::min(light_a, light_b);
   out.high = std::max(light_a, light_b);
-  r_low_out[0] = r_low;
   return std::isfinite(out.low) && std::isfinite(out.high);
 }
 
@@ -148,10 +148,30 @@ int budget_codes(const std::optional<float>& budget) {
   return codes < 255.0 ? static_cast<int>(codes) : 255;
 }
 
-ShadeInterval shade_interval(const BudgetTriangle& t, const BudgetState& state,
-                             double width_limit) {
+bool budget_shades(const ShadeBatch& batch) {
+  const bool planes = batch.shading == Shading::gouraud || batch.shading == Shading::diffuse;
+  const bool textured_flat = batch.texture != nullptr && batch.shading == Shading::flat;
+  return batch.budget_codes > 0 && (planes || textured_flat);
+}
+
+bool budget_tiles(const ShadeBatch& batch) {
+  if (!budget_shades(batch) || batch.texture == nullptr) return false;
+  switch (batch.sampler.filter) {
+    case TextureFilter::nearest:
+    case TextureFilter::bilinear:
+    case TextureFilter::mip_nearest:
+    case TextureFilter::trilinear:
+      return true;
+    default:
+      return false;
+  }
+}
+
+ShadeInterval shade_interval(const BudgetTriangle& t, const ShadeBatch& batch) {
+  const double width_limit =
+      batch.texture != nullptr ? kInfinity : untextured_width_limit(batch.budget_codes);
   ShadeInterval out;
-  if (state.shading == Shading::flat) {
+  if (batch.shading == Shading::flat) {
     // 255 c in float, one rounding.
     for (int k = 0; k < 4; ++k) {
       out.low[k] = out.high[k] = (&t.colour[0].x)[k];
@@ -178,8 +198,8 @@ ShadeInterval shade_interval(const BudgetTriangle& t, const BudgetState& state,
   }
   LightBound light{};
   double r_low = 0.0;
-  if (state.shading == Shading::diffuse) {
-    if (!light_interval(t, state, &r_low, light)) return out;
+  if (batch.shading == Shading::diffuse) {
+    if (!light_interval(t, batch, r_low, light)) return out;
     for (int k = 0; k < 3; ++k)
       multiply(out.low[k], out.high[k], light.low, light.high, out.low[k], out.high[k]);
   }
@@ -188,7 +208,7 @@ ShadeInterval shade_interval(const BudgetTriangle& t, const BudgetState& state,
   }
   // Then the exact path's float32 rounding.
   const PlaneGeometry geometry = plane_geometry(t.position);
-  const bool divides = texture_divides(state.perspective, t.w);
+  const bool divides = texture_divides(batch.perspective, t.w);
   double inverse_w[3] = {1.0, 1.0, 1.0};
   if (divides) {
     for (int i = 0; i < 3; ++i)
@@ -217,10 +237,10 @@ ShadeInterval shade_interval(const BudgetTriangle& t, const BudgetState& state,
     out.rounding[k] = error / 255.0;
     if (k < 3) worst_colour = std::max(worst_colour, out.rounding[k]);
   }
-  if (state.shading == Shading::diffuse) {
+  if (batch.shading == Shading::diffuse) {
     if (!light_error(t, geometry, divides, inverse_w, s, r_low, light)) return out;
     const double lit_error =
-        (std::abs(1.0 - static_cast<double>(state.ambient)) * light.error + 4.0 * kUnit) *
+        (std::abs(1.0 - static_cast<double>(batch.ambient)) * light.error + 4.0 * kUnit) *
         std::max(1.0, brightest + worst_colour);
     for (int k = 0; k < 3; ++k)
       out.rounding[k] = worst_colour + lit_error;
@@ -496,28 +516,15 @@ bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
 
 }  // namespace
 
-bool texture_tiles_eligible(const Texture& texture, const SamplerOptions& sampler) {
-  (void)texture;
-  switch (sampler.filter) {
-    case TextureFilter::nearest:
-    case TextureFilter::bilinear:
-    case TextureFilter::mip_nearest:
-    case TextureFilter::trilinear:
-      return true;
-    default:
-      return false;
-  }
-}
-
 std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
                                                    const TexturePlanes& planes,
-                                                   TextureDerivatives derivatives,
-                                                   const Texture& texture,
-                                                   const SamplerOptions& sampler, std::int32_t px,
-                                                   std::int32_t py, int codes) {
+                                                   const ShadeBatch& batch, std::int32_t px,
+                                                   std::int32_t py) {
+  const int codes = batch.budget_codes;
+  const Texture& texture = *batch.texture;
   if (!shade.bounded || codes <= 0) return std::nullopt;
   TileCoordinates coordinates;
-  if (!tile_coordinates(planes, derivatives, px, py, texture.width(), texture.height(),
+  if (!tile_coordinates(planes, batch.derivatives, px, py, texture.width(), texture.height(),
                         coordinates))
     return std::nullopt;
   double texel_low[4], texel_high[4];
@@ -531,7 +538,7 @@ std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
                                                : 0.0;
     widest[k] = least > 0.0 ? 2.0 * codes / 255.0 / least : kInfinity;
   }
-  if (!tile_texel_range(coordinates, texture, sampler, widest, texel_low, texel_high))
+  if (!tile_texel_range(coordinates, texture, batch.sampler, widest, texel_low, texel_high))
     return std::nullopt;
   std::uint32_t packed = 0;
   for (int k = 0; k < 4; ++k) {

@@ -35,6 +35,7 @@
 #include <optional>
 
 #include "edgewise/draw.hpp"
+#include "shade_batch.hpp"
 #include "texture_planes.hpp"
 
 namespace edgewise::detail {
@@ -51,13 +52,6 @@ struct BudgetTriangle {
   Vec3 normal[3];  // diffuse only
 };
 
-struct BudgetState {
-  Shading shading;
-  Perspective perspective;
-  Vec3 light;  // unit length
-  float ambient;
-};
-
 // Each channel's exact shaded value (before any texture) over the triangle's covered pixel
 // centres lies in [low, high]; the exact path's float32 value within `rounding` of it.
 struct ShadeInterval {
@@ -66,11 +60,20 @@ struct ShadeInterval {
   double rounding[4]{};
 };
 
-// The interval of a triangle shaded by plane equations (Gouraud or diffuse; flat gives the first
-// vertex's colour). Unbounded, without the cost of the rounding bound, where a channel's clamped
-// interval is not narrower than `width_limit`.
-ShadeInterval shade_interval(const BudgetTriangle& triangle, const BudgetState& state,
-                             double width_limit);
+// Whether the budget looks at the triangles of `batch` at all: a budget of at least one code
+// (which make_shade_batch() gives only to plane-equation shading of one sample per pixel), and
+// colour-plane shading (Gouraud, diffuse) or a textured flat one.
+bool budget_shades(const ShadeBatch& batch);
+
+// Whether its textured tiles may take one colour: budget_shades(), and a filter that averages the
+// texels it reads with weights in [0, 1] (nearest, bilinear, mip_nearest, trilinear).
+bool budget_tiles(const ShadeBatch& batch);
+
+// The interval of a triangle of `batch` (budget_shades()), shaded as the batch shades it (flat
+// gives the first vertex's colour). An untextured triangle whose clamped interval is not
+// narrower than untextured_width_limit() is left unbounded without the cost of the rounding
+// bound: it cannot take one colour.
+ShadeInterval shade_interval(const BudgetTriangle& triangle, const ShadeBatch& batch);
 
 // The width_limit of shade_interval() for an untextured triangle: wider intervals cannot give
 // one colour within K codes.
@@ -82,17 +85,12 @@ inline double untextured_width_limit(int codes) {
 // or nothing.
 std::optional<std::uint32_t> constant_colour(const ShadeInterval& shade, int codes);
 
-// Whether the sampler's filter and the texture allow constant_texture_tile() at all.
-bool texture_tiles_eligible(const Texture& texture, const SamplerOptions& sampler);
-
 // The packed colour that replaces shade times texel over the pixels of the tile with top-left
-// pixel (px, py) of a textured triangle with the given texture planes, within K codes, or
-// nothing. Needs texture_tiles_eligible().
+// pixel (px, py) of a textured triangle of `batch` with the given texture planes, within the
+// batch's codes, or nothing. Needs budget_tiles().
 std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
                                                    const TexturePlanes& planes,
-                                                   TextureDerivatives derivatives,
-                                                   const Texture& texture,
-                                                   const SamplerOptions& sampler, std::int32_t px,
-                                                   std::int32_t py, int codes);
+                                                   const ShadeBatch& batch, std::int32_t px,
+                                                   std::int32_t py);
 
 }  // namespace edgewise::detail
