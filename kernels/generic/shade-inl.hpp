@@ -61,10 +61,8 @@ class ShadingVisitor {
         // colours (and diffuse the normals) directly, and then, untextured, needs nothing per
         // triangle beyond the planes.
         needs_vertices_(textured_ || !colour_planes_),
-        // Under an error budget (shading_budget.hpp): the triangles whose shading it bounds, and
-        // whether textured tiles may take one colour.
+        // Under an error budget (shading_budget.hpp): the triangles whose shading it bounds.
         budget_shading_(detail::budget_shades(batch)),
-        budget_tiles_(detail::budget_tiles(batch)),
         pattern_(batch.coverage.samples),
         sample_reach_(sample_reach(pattern_)) {
     for (std::size_t k = 0; k < pattern_.size() && k < kMaxSamples; ++k) {
@@ -126,7 +124,7 @@ class ShadingVisitor {
     }
     // Under a budget, an untextured triangle is looked at closer unless its vertices already
     // rule one colour out.
-    constant_ = false;
+    constant_ = tile_choices_ = false;
     if (needs_vertices_ || (budget_shading_ && !beyond_budget_[l])) begin_triangle_from_vertices(t);
   }
 
@@ -150,6 +148,8 @@ class ShadingVisitor {
       if (batch_.normals != nullptr) normal_[i] = batch_.normals[corner[i]];
       if (textured_) uv[i] = batch_.uvs[corner[i]];
     }
+    if (textured_)
+      texture_planes_ = detail::make_texture_planes(p, uv, screen.w, batch_.perspective);
     if (budget_shading_) choose_within_budget(p, screen);
     // Interpolation coordinates from a pixel corner near the triangle keep float32 exact.
     origin_x_ = static_cast<std::int32_t>(std::floor(p[0].x));
@@ -164,10 +164,7 @@ class ShadingVisitor {
                    !(screen.w[0] == screen.w[1] && screen.w[1] == screen.w[2]);
     if (batch_.normals != nullptr && !normal_planes_) scale_normals();
     if (batch_.shading == Shading::flat) flat_color_ = pack_rgba8(color_[0]);
-    if (textured_) {
-      texture_planes_ = detail::make_texture_planes(p, uv, screen.w, batch_.perspective);
-      texture_.begin_triangle(texture_planes_, batch_.derivatives);
-    }
+    if (textured_) texture_.begin_triangle(texture_planes_, batch_.derivatives);
     if (!colour_planes_ && batch_.shading != Shading::flat) {
       interpolator_ = MethodInterpolator<Arch>(batch_.method, screen, origin_x_, origin_y_);
       if (perspective_) divide_ = PerspectiveDivide<Arch>(screen);
@@ -702,7 +699,10 @@ class ShadingVisitor {
     Mask writes[kTileSize][kParts];
     const std::uint32_t written_rows =
         depth_test_rows(mask, rows, depth, py, columns, stored_max, writes);
-    if (written_rows != 0 && budget_tiles_ && shade_interval_.bounded) {
+    if (written_rows != 0 && constant_) {
+      return write_constant_rows(written_rows, color, writes, constant_colour_);
+    }
+    if (written_rows != 0 && tile_choices_) {
       const std::optional<std::uint32_t> constant =
           detail::constant_texture_tile(shade_interval_, texture_planes_, batch_, px, py);
       if (constant) return write_constant_rows(written_rows, color, writes, *constant);
@@ -882,12 +882,18 @@ class ShadingVisitor {
       triangle.normal[i] = normal_[i];
     }
     shade_interval_ = detail::shade_interval(triangle, batch_);
+    std::optional<std::uint32_t> colour;
+    tile_choices_ = false;
     if (!textured_) {
-      const std::optional<std::uint32_t> colour =
-          detail::constant_colour(shade_interval_, batch_.budget_codes);
-      constant_ = colour.has_value();
-      constant_colour_ = colour.value_or(0u);
+      colour = detail::constant_colour(shade_interval_, batch_.budget_codes);
+    } else {
+      const detail::TexturePlan plan =
+          detail::texture_plan(shade_interval_, texture_planes_, batch_, p);
+      colour = plan.colour;
+      tile_choices_ = plan.tiles;
     }
+    constant_ = colour.has_value();
+    constant_colour_ = colour.value_or(0u);
   }
 
   // Scales the three normals by one power of two (exact, and n / |n| is unchanged) so that the
@@ -1050,7 +1056,7 @@ class ShadingVisitor {
   const bool keep_bounds_, reject_hidden_;
   const bool textured_;
   const bool needs_vertices_;  // begin_triangle() reads the vertices for more than the planes
-  const bool budget_shading_, budget_tiles_;
+  const bool budget_shading_;
   // The current group's planes and triangle.
   PlaneGroup<Arch> group_{};
   detail::DepthPlane depth_{};
@@ -1060,7 +1066,8 @@ class ShadingVisitor {
   std::uint32_t flat_color_ = 0;
   // The budget's choices for the current triangle.
   detail::ShadeInterval shade_interval_{};
-  bool constant_ = false;  // untextured, drawn in one colour
+  bool constant_ = false;      // drawn in one colour
+  bool tile_choices_ = false;  // textured: one colour per tile where the budget allows
   std::uint32_t constant_colour_ = 0;
   detail::TexturePlanes texture_planes_{};
   bool beyond_budget_[kSetupLanes<Arch>]{};  // of the current group (mark_beyond_budget())

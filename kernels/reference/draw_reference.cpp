@@ -163,10 +163,17 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
         budget_triangle.normal[i] = c[i].normal;
       }
       interval = detail::shade_interval(budget_triangle, batch);
-      if (batch.texture == nullptr)
-        constant = detail::constant_colour(interval, batch.budget_codes);
     }
-    const bool budget_tiles = detail::budget_tiles(batch) && interval.bounded;
+    bool budget_tiles = false;
+    if (detail::budget_shades(batch) && batch.texture == nullptr) {
+      constant = detail::constant_colour(interval, batch.budget_codes);
+    } else if (detail::budget_shades(batch)) {
+      const Vec2 position[3] = {c[0].position, c[1].position, c[2].position};
+      const detail::TexturePlan plan =
+          detail::texture_plan(interval, texture_planes, batch, position);
+      constant = plan.colour;
+      budget_tiles = plan.tiles;
+    }
     const PixelRect box = candidate_pixels(tri, batch.coverage.clip);
     for (std::int32_t py = box.y0; py < box.y1; ++py) {
       for (std::int32_t px = box.x0; px < box.x1; ++px) {

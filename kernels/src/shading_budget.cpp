@@ -356,11 +356,11 @@ struct TileCoordinates {
   double rho_low;       // a lower bound on the sampler's rho, in texels of level 0
 };
 
-bool tile_coordinates(const TexturePlanes& planes, TextureDerivatives derivatives, std::int32_t px,
-                      std::int32_t py, double width, double height, TileCoordinates& out) {
-  // Pixel centres of the tile, relative to the planes' origin (exact in double).
-  const double xs[2] = {px + 0.5 - planes.x0, px + 7.5 - planes.x0};
-  const double ys[2] = {py + 0.5 - planes.y0, py + 7.5 - planes.y0};
+bool tile_coordinates(const TexturePlanes& planes, TextureDerivatives derivatives,
+                      const PixelBox& box, double width, double height, TileCoordinates& out) {
+  // The box's outermost pixel centres, relative to the planes' origin (exact in double).
+  const double xs[2] = {box.x_first + 0.5 - planes.x0, box.x_last + 0.5 - planes.x0};
+  const double ys[2] = {box.y_first + 0.5 - planes.y0, box.y_last + 0.5 - planes.y0};
   const double reach_x = std::max(std::abs(xs[0]), std::abs(xs[1]));
   const double reach_y = std::max(std::abs(ys[0]), std::abs(ys[1]));
   out.s_low = out.t_low = kInfinity;
@@ -516,15 +516,17 @@ bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
 
 }  // namespace
 
-std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
-                                                   const TexturePlanes& planes,
-                                                   const ShadeBatch& batch, std::int32_t px,
-                                                   std::int32_t py) {
+namespace {
+
+// One colour for the pixels of `box` (a superset of those it is asked for), or nothing.
+std::optional<std::uint32_t> constant_texture_box(const ShadeInterval& shade,
+                                                  const TexturePlanes& planes,
+                                                  const ShadeBatch& batch, const PixelBox& box) {
   const int codes = batch.budget_codes;
   const Texture& texture = *batch.texture;
   if (!shade.bounded || codes <= 0) return std::nullopt;
   TileCoordinates coordinates;
-  if (!tile_coordinates(planes, batch.derivatives, px, py, texture.width(), texture.height(),
+  if (!tile_coordinates(planes, batch.derivatives, box, texture.width(), texture.height(),
                         coordinates))
     return std::nullopt;
   double texel_low[4], texel_high[4];
@@ -559,6 +561,42 @@ std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
     packed |= to_byte((low + high) / 2.0) << (8 * k);
   }
   return packed;
+}
+
+}  // namespace
+
+std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
+                                                   const TexturePlanes& planes,
+                                                   const ShadeBatch& batch, std::int32_t px,
+                                                   std::int32_t py) {
+  return constant_texture_box(shade, planes, batch, {px, px + 7, py, py + 7});
+}
+
+TexturePlan texture_plan(const ShadeInterval& shade, const TexturePlanes& planes,
+                         const ShadeBatch& batch, const Vec2 (&position)[3]) {
+  TexturePlan plan;
+  if (!budget_tiles(batch) || !shade.bounded) return plan;
+  double x_low = kInfinity, x_high = -kInfinity, y_low = kInfinity, y_high = -kInfinity;
+  for (const Vec2& p : position) {
+    x_low = std::min(x_low, static_cast<double>(p.x));
+    x_high = std::max(x_high, static_cast<double>(p.x));
+    y_low = std::min(y_low, static_cast<double>(p.y));
+    y_high = std::max(y_high, static_cast<double>(p.y));
+  }
+  // Pixel centres px + 1/2 in [x_low, x_high] have px in [ceil(x_low - 1/2), floor(x_high - 1/2)];
+  // the box holds those and may hold a few more.
+  constexpr double kLargest = 0x1p24;
+  if (!(std::abs(x_low) < kLargest && std::abs(x_high) < kLargest && std::abs(y_low) < kLargest &&
+        std::abs(y_high) < kLargest))
+    return plan;
+  const PixelBox box{static_cast<std::int32_t>(std::floor(x_low - 0.5)),
+                     static_cast<std::int32_t>(std::ceil(x_high - 0.5)),
+                     static_cast<std::int32_t>(std::floor(y_low - 0.5)),
+                     static_cast<std::int32_t>(std::ceil(y_high - 0.5))};
+  plan.colour = constant_texture_box(shade, planes, batch, box);
+  plan.tiles = !plan.colour && (box.x_last - box.x_first >= kTilePlanSpan ||
+                                box.y_last - box.y_first >= kTilePlanSpan);
+  return plan;
 }
 
 }  // namespace edgewise::detail

@@ -85,6 +85,23 @@ inline double untextured_width_limit(int codes) {
 // or nothing.
 std::optional<std::uint32_t> constant_colour(const ShadeInterval& shade, int codes);
 
+// Pixels x_first..x_last by y_first..y_last, inclusive.
+struct PixelBox {
+  std::int32_t x_first, x_last, y_first, y_last;
+};
+
+// The budget's plan for a textured triangle of `batch`, from its snapped screen positions: one
+// colour for all its pixels, else per-tile choices (constant_texture_tile()) when its box spans
+// kTilePlanSpan pixels or more on an axis, else the exact methods. A small triangle's own box is
+// as tight as its tiles' (each 8x8 whole), and one decision costs what one tile's does.
+struct TexturePlan {
+  std::optional<std::uint32_t> colour;
+  bool tiles = false;
+};
+constexpr std::int32_t kTilePlanSpan = 16;
+TexturePlan texture_plan(const ShadeInterval& shade, const TexturePlanes& planes,
+                         const ShadeBatch& batch, const Vec2 (&position)[3]);
+
 // The packed colour that replaces shade times texel over the pixels of the tile with top-left
 // pixel (px, py) of a textured triangle of `batch` with the given texture planes, within the
 // batch's codes, or nothing. Needs budget_tiles().
