@@ -1,5 +1,6 @@
-// BudgetDraw/<isa>/<scene>/<exact|budget:1/255>[/threads:all]: draw() on the demo's scenes with
-// the exact methods and with DrawOptions::error_budget = 1/255, side by side, at 1280 x 720:
+// BudgetDraw/<isa>/<scene>/<exact|budget:1/255|floor>[/threads:all]: draw() on the demo's
+// scenes with the exact methods and with DrawOptions::error_budget = 1/255, side by side, at
+// 1280 x 720:
 //   default   scene::default_scene() (ground plane, sphere, torus), per-pixel diffuse, back faces
 //             culled, perspective-correct;
 //   ground    scene::ground_scene() textured with the 1024 x 1024 checkerboard of 8 x 8 squares
@@ -8,7 +9,8 @@
 // colour with no interpolation and no texture, the least any shading choice can cost with
 // coverage and depth left exact. exact / floor is the most any budget can gain on the scene.
 // One iteration is one draw() call into a target cleared with the timer paused. The budgeted runs
-// also report `constant` (the share of written fragments given one colour) and `largest_codes`
+// also report `constant` (the share of written fragments given one colour), `one_texel` (the
+// share given one texel value per tile, their shading still per pixel) and `largest_codes`
 // (the largest 8-bit difference from the exact image, which the budget holds to 1).
 #include <benchmark/benchmark.h>
 
@@ -107,8 +109,9 @@ void budget_draw(benchmark::State& state, Isa isa, const BudgetScene* s, Variant
     benchmark::ClobberMemory();
   }
   if (last.fragments_passed == 0) state.SkipWithError("the scene draws nothing");
-  state.counters["constant"] = double(last.fragments_constant) /
-                               double(last.fragments_passed == 0 ? 1 : last.fragments_passed);
+  const double written = double(last.fragments_passed == 0 ? 1 : last.fragments_passed);
+  state.counters["constant"] = double(last.fragments_constant) / written;
+  state.counters["one_texel"] = double(last.fragments_one_texel) / written;
   if (variant != Variant::budget) return;
   // The budget's promise, measured on the last frame.
   Framebuffer exact(kBudgetWidth, kBudgetHeight);

@@ -254,6 +254,8 @@ void print_counts(const DrawReport& report) {
   print_count("fragments passed", report.fragments_passed);
   print_count("tiles skipped", report.tiles_skipped, "hidden by the per-tile depth bound");
   print_count("constant", report.fragments_constant, "fragments given one colour under the budget");
+  print_count("one texel", report.fragments_one_texel,
+              "fragments given one texel value per tile under the budget");
 }
 
 // ---- The modes: one frame, --compare-isas, --each-filter, --compare-budget ---------------------
@@ -481,7 +483,8 @@ InterleavedFrames render_interleaved(Framebuffer& exact_target, Framebuffer& bud
     const FrameTimes b = render_frames(budget_target, mesh, budgeted, 1);
     if (!same_counts(e.report, frames.exact_report) ||
         !same_counts(b.report, frames.budget_report) ||
-        b.report.fragments_constant != frames.budget_report.fragments_constant) {
+        b.report.fragments_constant != frames.budget_report.fragments_constant ||
+        b.report.fragments_one_texel != frames.budget_report.fragments_one_texel) {
       throw std::logic_error("draw() counted differently on two identical frames");
     }
     frames.exact_seconds.push_back(e.frame);
@@ -550,6 +553,13 @@ int compare_budget(const RenderSettings& settings, const LoadedScene& loaded, co
   print_row("ratio", fixed_text(exact_median / budget_median, 3),
             "exact / budget: above 1, the budget is faster");
   print_count("constant", constant, fixed_text(share, 1) + "% of the fragments written");
+  const std::uint64_t one_texel = frames.budget_report.fragments_one_texel;
+  print_count(
+      "one texel", one_texel,
+      fixed_text(
+          written > 0 ? 100.0 * static_cast<double>(one_texel) / static_cast<double>(written) : 0.0,
+          1) +
+          "% of the fragments written");
   print_row("largest difference", codes_text(d.max_colour_codes),
             "any channel, any pixel, last images; the budget allows " + std::to_string(allowed));
   print_count("pixels differing", d.colour_pixels, "of " + std::to_string(pixels));

@@ -702,16 +702,36 @@ class ShadingVisitor {
     if (written_rows != 0 && constant_) {
       return write_constant_rows(written_rows, color, writes, constant_colour_);
     }
-    if (written_rows != 0 && tile_choices_) {
-      const std::optional<std::uint32_t> constant =
-          detail::constant_texture_tile(shade_interval_, texture_planes_, batch_, px, py);
-      if (constant) return write_constant_rows(written_rows, color, writes, *constant);
-    }
     if (written_rows != 0) {
-      texture_.sample_rows(batch_, px, py, std::countr_zero(written_rows),
-                           31 - std::countl_zero(written_rows));
+      const int first_row = std::countr_zero(written_rows);
+      const int last_row = 31 - std::countl_zero(written_rows);
+      texture_.query_rows(px, py, first_row, last_row);
+      detail::TileTexture choice;
+      if (tile_choices_) {
+        choice = detail::measured_texture_tile(shade_interval_,
+                                               texture_.measure(written_rows, writes), batch_);
+      }
+      if (choice.colour) return write_constant_rows(written_rows, color, writes, *choice.colour);
+      if (choice.one_texel) {
+        texture_.fill_rows(choice.texel, first_row, last_row);
+        one_texel_fragments_ += written_fragments(written_rows, writes);
+      } else {
+        texture_.filter_rows(batch_, first_row, last_row);
+      }
     }
     write_textured_rows(written_rows, color, px, py, columns, colour_row_bases, writes);
+  }
+
+  // The lanes of `writes` in the rows of `written_rows`.
+  [[gnu::always_inline]] static std::uint64_t written_fragments(std::uint32_t written_rows,
+                                                                const Mask (*writes)[kParts]) {
+    std::uint64_t written = 0;
+    for (; written_rows != 0; written_rows &= written_rows - 1) {
+      const int row = std::countr_zero(written_rows);
+      for (std::size_t h = 0; h < kParts; ++h)
+        written += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(writes[row][h])));
+    }
+    return written;
   }
 
   // A tile the budget gives one colour: written under `writes` in the rows of `written_rows`.
@@ -868,6 +888,7 @@ class ShadingVisitor {
     counts.fragments += fragments_;
     counts.passed += passed_;
     counts.constant += constant_fragments_;
+    counts.one_texel += one_texel_fragments_;
   }
 
  private:
@@ -1084,6 +1105,7 @@ class ShadingVisitor {
   std::uint64_t tiles_skipped_ = 0;
   std::uint64_t passed_ = 0;
   std::uint64_t constant_fragments_ = 0;
+  std::uint64_t one_texel_fragments_ = 0;
   TextureTile<Arch> texture_;
   // The target's sample pattern (empty: pixel centres) and its reach (sample_walk-inl.hpp).
   std::span<const SampleOffset> pattern_;

@@ -10,7 +10,9 @@
 #pragma once
 
 #include <cstddef>
+#include <bit>
 #include <cstdint>
+#include <limits>
 
 #include <xsimd/xsimd.hpp>
 
@@ -45,6 +47,12 @@ class TextureTile {
   // the texels the batch's sampler filters there.
   void sample_rows(const detail::ShadeBatch& batch, std::int32_t px, std::int32_t py, int first_row,
                    int last_row) {
+    query_rows(px, py, first_row, last_row);
+    filter_rows(batch, first_row, last_row);
+  }
+
+  // The queries of rows first_row .. last_row, for measure() and filter_rows().
+  void query_rows(std::int32_t px, std::int32_t py, int first_row, int last_row) {
     const bool quad = derivatives_ == TextureDerivatives::quad;
     // Quad differences need the other row of each quad too.
     const int first = quad ? first_row & ~1 : first_row;
@@ -81,6 +89,10 @@ class TextureTile {
       for (std::size_t h = 0; h < kParts; ++h)
         derivatives_at(row, h);
     }
+  }
+
+  // The sampler's texels at the queries of rows first_row .. last_row.
+  void filter_rows(const detail::ShadeBatch& batch, int first_row, int last_row) {
     const std::size_t begin = static_cast<std::size_t>(first_row) * kTileSize;
     const std::size_t count = static_cast<std::size_t>(last_row - first_row + 1) * kTileSize;
     const detail::QueryFields fields{s_ + kPad + begin, t_ + kPad + begin, dsdx_ + begin,
@@ -88,6 +100,52 @@ class TextureTile {
     const detail::ResultChannels results{
         {texels_[0] + begin, texels_[1] + begin, texels_[2] + begin, texels_[3] + begin}};
     sample_fields(*batch.texture_description, batch.sampler, fields, count, results);
+  }
+
+  // The least and greatest of each query field over the lanes `lanes[row][h]` of the rows in
+  // `rows` (bit r for row r), after query_rows(): exact, as only minima and maxima of the values
+  // the sampler receives, so the reference finds the same.
+  template <class Mask>
+  detail::TileQueries measure(std::uint32_t rows, const Mask (*lanes)[kParts]) const {
+    const float* fields[6] = {s_ + kPad, t_ + kPad, dsdx_, dtdx_, dsdy_, dtdy_};
+    const Floats infinity(std::numeric_limits<float>::infinity());
+    Floats low[6], high[6];
+    for (int f = 0; f < 6; ++f) {
+      low[f] = infinity;
+      high[f] = -infinity;
+    }
+    Mask finite(true);
+    for (; rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
+      for (std::size_t h = 0; h < kParts; ++h) {
+        const Mask in = lanes[row][h];
+        const std::size_t at = static_cast<std::size_t>(row) * kTileSize + h * kLanes;
+        for (int f = 0; f < 6; ++f) {
+          const Floats v = Floats::load_aligned(fields[f] + at);
+          finite = finite & ((xsimd::abs(v) <= Floats(std::numeric_limits<float>::max())) | !in);
+          low[f] = xsimd::select(in, xsimd::min(low[f], v), low[f]);
+          high[f] = xsimd::select(in, xsimd::max(high[f], v), high[f]);
+        }
+      }
+    }
+    detail::TileQueries queries;
+    queries.finite = xsimd::all(finite);
+    for (int f = 0; f < 6; ++f) {
+      queries.low[f] = -lane_max<Arch>(-low[f]);
+      queries.high[f] = lane_max<Arch>(high[f]);
+    }
+    return queries;
+  }
+
+  // Every texel of rows first_row .. last_row set to `texel` (the budget's one texel value).
+  void fill_rows(const float (&texel)[4], int first_row, int last_row) {
+    for (int k = 0; k < 4; ++k) {
+      const Floats value(texel[k]);
+      for (int row = first_row; row <= last_row; ++row) {
+        for (std::size_t h = 0; h < kParts; ++h)
+          value.store_aligned(texels_[k] + static_cast<std::size_t>(row) * kTileSize + h * kLanes);
+      }
+    }
   }
 
   // Channel k (linear) of the texels at lanes h of `row`, after sample_rows().

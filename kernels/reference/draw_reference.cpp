@@ -3,10 +3,12 @@
 // are the fast paths' exactly), and colour, once per pixel at its centre, from the
 // double-precision interpolation references; textured, times the double-precision sampling
 // reference at the shared queries (texture_planes.hpp).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 
@@ -175,42 +177,90 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
       budget_tiles = plan.tiles;
     }
     const PixelRect box = candidate_pixels(tri, batch.coverage.clip);
-    for (std::int32_t py = box.y0; py < box.y1; ++py) {
-      for (std::int32_t px = box.x0; px < box.x1; ++px) {
-        // Each covered sample's depth tested and written; the pixel shaded once, at its centre,
-        // if any passed, and its colour written to those.
-        bool any_passed = false;
-        bool passed[kMaxSamples] = {};
-        for (std::size_t k = 0; k < samples; ++k) {
-          const SampleOffset offset = pattern[k];
-          if (!covers_sample(tri, px, py, offset)) continue;
-          ++counts.fragments;
-          const std::size_t index = sample_index(batch, px, py, k);
-          const float depth = detail::depth_at(plane, px, py, offset.x, offset.y);
-          if (!passes(batch.depth_test, depth, batch.depth_tiles[index])) continue;
-          ++counts.passed;
-          if (batch.depth_write) batch.depth_tiles[index] = depth;
-          passed[k] = any_passed = true;
+    if (box.empty()) return;
+    // Tile by tile, as the kernels choose per tile: every pixel's depth first, then the choice
+    // from the pixels written, then their colour (a pixel's depth is tested once per triangle,
+    // so the order changes nothing else).
+    for (std::int32_t ty = box.y0 >> 3; ty <= (box.y1 - 1) >> 3; ++ty) {
+      for (std::int32_t tx = box.x0 >> 3; tx <= (box.x1 - 1) >> 3; ++tx) {
+        const std::int32_t x0 = std::max(box.x0, tx * 8), x1 = std::min(box.x1, tx * 8 + 8);
+        const std::int32_t y0 = std::max(box.y0, ty * 8), y1 = std::min(box.y1, ty * 8 + 8);
+        // Each covered sample's depth tested and written.
+        bool passed[64][kMaxSamples] = {};
+        bool any_passed[64] = {};
+        for (std::int32_t py = y0; py < y1; ++py) {
+          for (std::int32_t px = x0; px < x1; ++px) {
+            const int at = (py & 7) * 8 + (px & 7);
+            for (std::size_t k = 0; k < samples; ++k) {
+              const SampleOffset offset = pattern[k];
+              if (!covers_sample(tri, px, py, offset)) continue;
+              ++counts.fragments;
+              const std::size_t index = sample_index(batch, px, py, k);
+              const float depth = detail::depth_at(plane, px, py, offset.x, offset.y);
+              if (!passes(batch.depth_test, depth, batch.depth_tiles[index])) continue;
+              ++counts.passed;
+              if (batch.depth_write) batch.depth_tiles[index] = depth;
+              passed[at][k] = any_passed[at] = true;
+            }
+          }
         }
-        if (!any_passed) continue;
-        std::optional<std::uint32_t> budget_colour = constant;
+        // The budget's choice for the tile, from the queries of the pixels written.
+        detail::TileTexture choice;
         if (budget_tiles) {
-          budget_colour =
-              detail::constant_texture_tile(interval, texture_planes, batch, px & ~7, py & ~7);
+          detail::TileQueries queries;
+          for (int f = 0; f < 6; ++f) {
+            queries.low[f] = std::numeric_limits<float>::infinity();
+            queries.high[f] = -std::numeric_limits<float>::infinity();
+          }
+          bool any = false;
+          for (std::int32_t py = y0; py < y1; ++py) {
+            for (std::int32_t px = x0; px < x1; ++px) {
+              if (!any_passed[(py & 7) * 8 + (px & 7)]) continue;
+              any = true;
+              const TextureQuery q =
+                  detail::texture_query(texture_planes, batch.derivatives, px, py);
+              const float fields[6] = {q.s, q.t, q.dsdx, q.dtdx, q.dsdy, q.dtdy};
+              for (int f = 0; f < 6; ++f) {
+                queries.finite = queries.finite && std::isfinite(fields[f]);
+                queries.low[f] = std::min(queries.low[f], fields[f]);
+                queries.high[f] = std::max(queries.high[f], fields[f]);
+              }
+            }
+          }
+          if (any) choice = detail::measured_texture_tile(interval, queries, batch);
         }
-        std::array<double, 4> rgba = shaded_colour(batch, c, px + 0.5, py + 0.5);
-        if (batch.texture != nullptr && !budget_colour) {
-          const TextureQuery query =
-              detail::texture_query(texture_planes, batch.derivatives, px, py);
-          const Rgba texel = sample(*batch.texture, batch.sampler, query);
-          for (int k = 0; k < 4; ++k)
-            rgba[k] *= texel[k];
-        }
-        const std::uint32_t packed = budget_colour ? *budget_colour : pack(rgba);
-        for (std::size_t k = 0; k < samples; ++k) {
-          if (!passed[k]) continue;
-          batch.color_tiles[sample_index(batch, px, py, k)] = packed;
-          if (budget_colour) ++counts.constant;
+        const std::optional<std::uint32_t> budget_colour = constant ? constant : choice.colour;
+        // Each pixel with a passed sample shaded once, at its centre, and its colour written to
+        // those samples.
+        for (std::int32_t py = y0; py < y1; ++py) {
+          for (std::int32_t px = x0; px < x1; ++px) {
+            const int at = (py & 7) * 8 + (px & 7);
+            if (!any_passed[at]) continue;
+            std::array<double, 4> rgba = shaded_colour(batch, c, px + 0.5, py + 0.5);
+            if (batch.texture != nullptr && !budget_colour) {
+              Rgba texel;
+              if (choice.one_texel) {
+                for (int k = 0; k < 4; ++k)
+                  texel[k] = choice.texel[k];
+              } else {
+                const TextureQuery query =
+                    detail::texture_query(texture_planes, batch.derivatives, px, py);
+                texel = sample(*batch.texture, batch.sampler, query);
+              }
+              for (int k = 0; k < 4; ++k)
+                rgba[k] *= texel[k];
+            }
+            const std::uint32_t packed = budget_colour ? *budget_colour : pack(rgba);
+            for (std::size_t k = 0; k < samples; ++k) {
+              if (!passed[at][k]) continue;
+              batch.color_tiles[sample_index(batch, px, py, k)] = packed;
+              if (budget_colour) {
+                ++counts.constant;
+              } else if (choice.one_texel) {
+                ++counts.one_texel;
+              }
+            }
+          }
         }
       }
     }

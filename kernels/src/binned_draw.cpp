@@ -92,6 +92,7 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
     report.fragments_passed += counts.shading.passed;
     report.tiles_skipped += counts.shading.tiles_skipped;
     report.fragments_constant += counts.shading.constant;
+    report.fragments_one_texel += counts.shading.one_texel;
   }
 }
 

@@ -133,6 +133,7 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
   report.fragments_passed = counts.passed;
   report.tiles_skipped = counts.tiles_skipped;
   report.fragments_constant = counts.constant;
+  report.fragments_one_texel = counts.one_texel;
 }
 
 }  // namespace detail

@@ -54,6 +54,7 @@ struct ShadeCounts {
   std::uint64_t passed = 0;         // samples that passed the depth test
   std::uint64_t tiles_skipped = 0;  // tiles rejected whole by their depth bound
   std::uint64_t constant = 0;       // passed samples written with a budget's constant colour
+  std::uint64_t one_texel = 0;      // passed samples given a budget's one texel value per tile
 };
 
 }  // namespace edgewise::detail

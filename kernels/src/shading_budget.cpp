@@ -518,21 +518,15 @@ bool tile_texel_range(const TileCoordinates& c, const Texture& texture,
 
 namespace {
 
-// One colour for the pixels of `box` (a superset of those it is asked for), or nothing.
-std::optional<std::uint32_t> constant_texture_box(const ShadeInterval& shade,
-                                                  const TexturePlanes& planes,
-                                                  const ShadeBatch& batch, const PixelBox& box) {
+// The tile's choice from where its queries lie (`coordinates`): one colour for shade times texel,
+// else one texel value for every pixel (the shade still per pixel), else nothing.
+TileTexture texture_choice(const ShadeInterval& shade, const TileCoordinates& coordinates,
+                           const ShadeBatch& batch) {
   const int codes = batch.budget_codes;
-  const Texture& texture = *batch.texture;
-  if (!shade.bounded || codes <= 0) return std::nullopt;
-  TileCoordinates coordinates;
-  if (!tile_coordinates(planes, batch.derivatives, box, texture.width(), texture.height(),
-                        coordinates))
-    return std::nullopt;
-  double texel_low[4], texel_high[4];
+  if (!shade.bounded || codes <= 0) return {};
   // A texel range wider than 2 K / 255 over the least shade magnitude makes the product wider
-  // than one colour allows (where the shade keeps its sign; clamping could only narrow it, and
-  // giving up is always allowed).
+  // than one colour allows (where the shade keeps its sign; clamping could only narrow it), and
+  // one texel value allows less (the largest magnitude): giving up there is always allowed.
   double widest[4];
   for (int k = 0; k < 4; ++k) {
     const double least = shade.low[k] > 0.0    ? shade.low[k]
@@ -540,36 +534,82 @@ std::optional<std::uint32_t> constant_texture_box(const ShadeInterval& shade,
                                                : 0.0;
     widest[k] = least > 0.0 ? 2.0 * codes / 255.0 / least : kInfinity;
   }
-  if (!tile_texel_range(coordinates, texture, batch.sampler, widest, texel_low, texel_high))
-    return std::nullopt;
+  double texel_low[4], texel_high[4];
+  if (!tile_texel_range(coordinates, *batch.texture, batch.sampler, widest, texel_low, texel_high))
+    return {};
+  TileTexture choice;
   std::uint32_t packed = 0;
+  bool one_colour = true, one_texel = true;
   for (int k = 0; k < 4; ++k) {
+    // The exact path: its shaded value within `rounding` of the interval, its filtered texel
+    // within 16 u of the texels' range, the product one rounding more.
+    const double texel_abs = std::max(std::abs(texel_low[k]), std::abs(texel_high[k]));
+    const double shade_abs =
+        std::max(std::abs(shade.low[k]), std::abs(shade.high[k])) + shade.rounding[k];
     double low, high;
     multiply(shade.low[k], shade.high[k], texel_low[k], texel_high[k], low, high);
     low = clamp01(low);
     high = clamp01(high);
-    // The exact path: its shaded value within `rounding`, its filtered texel within 16 u of the
-    // texels' range, the product one rounding more.
-    const double texel_abs = std::max(std::abs(texel_low[k]), std::abs(texel_high[k]));
-    const double shade_abs =
-        std::max(std::abs(shade.low[k]), std::abs(shade.high[k])) + shade.rounding[k];
     const double rounding = shade.rounding[k] * texel_abs * (1.0 + 16.0 * kUnit) +
                             shade_abs * 16.0 * kUnit * texel_abs +
                             4.0 * kUnit * shade_abs * texel_abs;
-    const double error = (high - low) / 2.0 + rounding;
-    if (!(255.0 * error < codes)) return std::nullopt;
+    one_colour = one_colour && 255.0 * ((high - low) / 2.0 + rounding) < codes;
     packed |= to_byte((low + high) / 2.0) << (8 * k);
+    // One texel value T for every pixel: the midpoint of the range, rounded to float. The exact
+    // texel is within half the range and 16 u of it, T within u more; times the pixel's float
+    // shade (at most shade_abs), each product rounded once and clamped (which only narrows).
+    const double middle = (texel_low[k] + texel_high[k]) / 2.0;
+    choice.texel[k] = static_cast<float>(middle);
+    const double texel_error = (texel_high[k] - texel_low[k]) / 2.0 + 17.0 * kUnit * texel_abs;
+    one_texel = one_texel && 255.0 * (shade_abs * texel_error +
+                                      2.0 * kUnit * shade_abs * (texel_abs + texel_error)) <
+                                 codes;
   }
-  return packed;
+  if (one_colour) {
+    choice.colour = packed;
+  } else if (!one_texel) {
+    return {};
+  }
+  choice.one_texel = one_texel;
+  return choice;
+}
+
+// The least nonzero magnitude over [low, high]: 0 where it holds 0.
+double least_magnitude(double low, double high) {
+  return low > 0.0 ? low : high < 0.0 ? -high : 0.0;
 }
 
 }  // namespace
 
-std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
-                                                   const TexturePlanes& planes,
-                                                   const ShadeBatch& batch, std::int32_t px,
-                                                   std::int32_t py) {
-  return constant_texture_box(shade, planes, batch, {px, px + 7, py, py + 7});
+TileTexture measured_texture_tile(const ShadeInterval& shade, const TileQueries& queries,
+                                  const ShadeBatch& batch) {
+  if (!queries.finite || !budget_tiles(batch)) return {};
+  const double width = batch.texture->width(), height = batch.texture->height();
+  // The sampler filters at exactly these queries: the coordinates need no widening beyond
+  // tile_texel_range()'s own (the fast filters' index arithmetic, one texel), the derivatives
+  // none beyond its lambda margin (the float rho and log2).
+  TileCoordinates c;
+  c.s_low = queries.low[0];
+  c.s_high = queries.high[0];
+  c.t_low = queries.low[1];
+  c.t_high = queries.high[1];
+  double magnitude[4];
+  for (int f = 0; f < 4; ++f) {
+    magnitude[f] = std::max(std::abs(static_cast<double>(queries.low[2 + f])),
+                            std::abs(static_cast<double>(queries.high[2 + f])));
+  }
+  c.ds[0] = magnitude[0];  // ds/dx
+  c.dt[0] = magnitude[1];  // dt/dx
+  c.ds[1] = magnitude[2];  // ds/dy
+  c.dt[1] = magnitude[3];  // dt/dy
+  // Every rho (exact or max_axis) is at least each derivative's magnitude in texels.
+  c.rho_low = 0.0;
+  for (int f = 0; f < 4; ++f) {
+    const double scale = f % 2 == 0 ? width : height;
+    c.rho_low =
+        std::max(c.rho_low, least_magnitude(queries.low[2 + f], queries.high[2 + f]) * scale);
+  }
+  return texture_choice(shade, c, batch);
 }
 
 TexturePlan texture_plan(const ShadeInterval& shade, const TexturePlanes& planes,
@@ -593,7 +633,12 @@ TexturePlan texture_plan(const ShadeInterval& shade, const TexturePlanes& planes
                      static_cast<std::int32_t>(std::ceil(x_high - 0.5)),
                      static_cast<std::int32_t>(std::floor(y_low - 0.5)),
                      static_cast<std::int32_t>(std::ceil(y_high - 0.5))};
-  plan.colour = constant_texture_box(shade, planes, batch, box);
+  TileCoordinates coordinates;
+  const Texture& texture = *batch.texture;
+  if (tile_coordinates(planes, batch.derivatives, box, texture.width(), texture.height(),
+                       coordinates)) {
+    plan.colour = texture_choice(shade, coordinates, batch).colour;
+  }
   plan.tiles = !plan.colour && (box.x_last - box.x_first >= kTilePlanSpan ||
                                 box.y_last - box.y_first >= kTilePlanSpan);
   return plan;

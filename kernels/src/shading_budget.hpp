@@ -4,11 +4,15 @@
 // colours where they choose (docs/DESIGN.md, "Error budget").
 //
 // The exact colour of a pixel is clamp(shade(p) * texel(p)) per channel, written as
-// round(255 v). The choices replace it by one colour C for a whole triangle, or for a whole 8x8
-// tile of a textured triangle, computed here in double. They are taken only where
+// round(255 v). The choices replace it by one colour C for a whole triangle, or for the pixels a
+// textured triangle writes in an 8x8 tile, computed here in double; or, in such a tile, replace
+// texel(p) by one value T, the shade staying per pixel. They are taken only where
 //   255 (|C - exact value| + the exact path's own float32 rounding) < K,   K = floor(255 budget),
-// which makes the written codes differ by at most K (two numbers less than K apart round to
-// integers at most K apart), that is by at most the budget.
+// (for T, 255 max|shade| (|T - exact texel| + rounding) < K), which makes the written codes
+// differ by at most K (two numbers less than K apart round to integers at most K apart), that is
+// by at most the budget. A tile's choice reads where the sampler's queries lie over the pixels
+// written (TileQueries), taken as minima and maxima of the very floats the sampler receives, so
+// every path finds the same; a whole triangle's, from bounds on its texture planes over its box.
 //
 // Why a constant is safe: at a covered pixel centre (inside the triangle) every interpolation
 // weight of draw()'s methods, perspective-correct or not, is in [0, 1] and they sum to 1, so a
@@ -91,7 +95,7 @@ struct PixelBox {
 };
 
 // The budget's plan for a textured triangle of `batch`, from its snapped screen positions: one
-// colour for all its pixels, else per-tile choices (constant_texture_tile()) when its box spans
+// colour for all its pixels, else per-tile choices (measured_texture_tile()) when its box spans
 // kTilePlanSpan pixels or more on an axis, else the exact methods. A small triangle's own box is
 // as tight as its tiles' (each 8x8 whole), and one decision costs what one tile's does.
 struct TexturePlan {
@@ -102,12 +106,24 @@ constexpr std::int32_t kTilePlanSpan = 16;
 TexturePlan texture_plan(const ShadeInterval& shade, const TexturePlanes& planes,
                          const ShadeBatch& batch, const Vec2 (&position)[3]);
 
-// The packed colour that replaces shade times texel over the pixels of the tile with top-left
-// pixel (px, py) of a textured triangle of `batch` with the given texture planes, within the
-// batch's codes, or nothing. Needs budget_tiles().
-std::optional<std::uint32_t> constant_texture_tile(const ShadeInterval& shade,
-                                                   const TexturePlanes& planes,
-                                                   const ShadeBatch& batch, std::int32_t px,
-                                                   std::int32_t py);
+// The texture queries of the pixels a tile writes, as the sampler receives them: each field's
+// least and greatest value (s, t, ds/dx, dt/dx, ds/dy, dt/dy), and whether all were finite.
+struct TileQueries {
+  bool finite = true;
+  float low[6], high[6];
+};
+
+// The choice for a tile: one packed colour for shade times texel, or else (one_texel) one texel
+// value for every pixel, with the shade still per pixel; neither when both are empty.
+struct TileTexture {
+  std::optional<std::uint32_t> colour;
+  bool one_texel = false;
+  float texel[4]{};
+};
+
+// The choice for a tile of a textured triangle of `batch` (texture_plan().tiles) that writes
+// pixels whose queries lie within `queries`.
+TileTexture measured_texture_tile(const ShadeInterval& shade, const TileQueries& queries,
+                                  const ShadeBatch& batch);
 
 }  // namespace edgewise::detail

@@ -1,8 +1,9 @@
 // DrawOptions::error_budget: on every ISA and the scalar reference, an image drawn with a budget
 // differs from the same ISA's exact image by at most floor(255 budget) codes at every pixel, its
-// depth is the same, and every ISA makes the reference's choices (the same count of fragments
-// given one colour). Random scenes, and adversarial ones: slivers, w ratios up to the frustum's,
-// colours outside [0, 1], normals far apart, textures with sharp edges under every wrap mode.
+// depth is the same, and every ISA makes the reference's choices (the same counts of fragments
+// given one colour and given one texel value per tile). Random scenes, and adversarial ones:
+// slivers, w ratios up to the frustum's, colours outside [0, 1], normals far apart, textures with
+// sharp edges under every wrap mode.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -108,15 +109,26 @@ Difference compare(const Rendered& a, const Rendered& b) {
   return d;
 }
 
+// The fragments the budget gave one colour, and one texel value per tile.
+struct Chosen {
+  std::uint64_t constant = 0, one_texel = 0;
+  bool operator==(const Chosen&) const = default;
+  Chosen& operator+=(const Chosen& other) {
+    constant += other.constant;
+    one_texel += other.one_texel;
+    return *this;
+  }
+};
+
 // Draws `scene` exactly and within `budget` on every ISA: the budgeted image within the budget's
-// codes of the exact one, the same depth, and the reference's count of constant fragments.
-// Returns the reference's count.
-std::uint64_t check_budget(const Scene& scene, DrawOptions options, float budget,
-                           const std::string& label) {
+// codes of the exact one, the same depth, and the reference's counts of chosen fragments.
+// Returns the reference's counts.
+Chosen check_budget(const Scene& scene, DrawOptions options, float budget,
+                    const std::string& label) {
   // The library's rule (shading_budget.hpp): within 2^-20 of k/255 counts as k codes.
   const int codes = static_cast<int>(std::floor(255.0 * budget * (1.0 + 0x1p-20)));
-  std::uint64_t reference_constant = 0;
-  std::vector<std::pair<Isa, std::uint64_t>> chosen;
+  Chosen reference_chosen;
+  std::vector<std::pair<Isa, Chosen>> chosen;
   for (Isa isa : every_isa()) {
     options.error_budget.reset();
     const Rendered exact = render(isa, scene, options, kWidth, kHeight);
@@ -128,15 +140,19 @@ std::uint64_t check_budget(const Scene& scene, DrawOptions options, float budget
     EXPECT_EQ(budgeted.report.fragments_passed, exact.report.fragments_passed) << label;
     if (codes == 0) {
       EXPECT_EQ(budgeted.report.fragments_constant, 0u) << label;
+      EXPECT_EQ(budgeted.report.fragments_one_texel, 0u) << label;
     }
-    if (isa == Isa::reference) reference_constant = budgeted.report.fragments_constant;
-    chosen.emplace_back(isa, budgeted.report.fragments_constant);
+    const Chosen counts{budgeted.report.fragments_constant, budgeted.report.fragments_one_texel};
+    if (isa == Isa::reference) reference_chosen = counts;
+    chosen.emplace_back(isa, counts);
   }
-  for (const auto& [isa, count] : chosen) {
-    EXPECT_EQ(count, reference_constant)
-        << label << " on " << name_of(isa) << ": not the reference's choices";
+  for (const auto& [isa, counts] : chosen) {
+    EXPECT_TRUE(counts == reference_chosen)
+        << label << " on " << name_of(isa) << ": not the reference's choices (" << counts.constant
+        << " constant and " << counts.one_texel << " one-texel fragments against "
+        << reference_chosen.constant << " and " << reference_chosen.one_texel << ")";
   }
-  return reference_constant;
+  return reference_chosen;
 }
 
 TEST(ErrorBudget, RefusesNegativeAndNaNBudgets) {
@@ -170,7 +186,7 @@ TEST(ErrorBudget, RandomScenesWithinBudgetWithTheReferencesChoices) {
                                     std::string(name_of(shading)) + " " +
                                     std::string(name_of(perspective)) + " budget " +
                                     std::to_string(budget * 255) + "/255";
-          constant += check_budget(scene, options, budget, label);
+          constant += check_budget(scene, options, budget, label).constant;
         }
       }
     }
@@ -188,17 +204,18 @@ TEST(ErrorBudget, AdversarialScenesWithinBudget) {
       options.shading = shading;
       options.cull = CullMode::none;
       options.depth_test = DepthTest::always;  // every layer reaches the image
-      constant += check_budget(
-          scene, options, 1.0f / 255,
-          "adversarial round " + std::to_string(round) + " " + std::string(name_of(shading)));
+      constant += check_budget(scene, options, 1.0f / 255,
+                               "adversarial round " + std::to_string(round) + " " +
+                                   std::string(name_of(shading)))
+                      .constant;
     }
   }
   EXPECT_GT(constant, 0u);
 }
 
 // Sharp-edged textures: a checkerboard (power-of-two size) and random blocks (not a power of
-// two), magnified and minified, every wrap mode, both derivative kinds, the filters the budget
-// bounds and one it does not.
+// two), and a nearly flat one, magnified and minified, every wrap mode, both derivative kinds, the
+// filters the budget bounds and one it does not.
 Texture checker_texture(std::int32_t width, std::int32_t height, std::int32_t square) {
   std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 4);
   for (std::int32_t y = 0; y < height; ++y) {
@@ -212,10 +229,22 @@ Texture checker_texture(std::int32_t width, std::int32_t height, std::int32_t sq
   return Texture::from_rgba8(width, height, texels, ColorEncoding::srgb);
 }
 
+// Nearly flat: every texel within 3 codes of one colour, so that a tile's texels span a few codes
+// and the choice of one texel value turns on the shade it is multiplied by.
+Texture nearly_flat_texture(Random& random, std::int32_t width, std::int32_t height) {
+  std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 4);
+  for (std::size_t i = 0; i < texels.size(); ++i) {
+    const int base[4] = {150, 110, 70, 255};
+    texels[i] = static_cast<std::uint8_t>(base[i % 4] - (i % 4 == 3 ? 0 : random.integer(0, 3)));
+  }
+  return Texture::from_rgba8(width, height, texels, ColorEncoding::linear);
+}
+
 TEST(ErrorBudget, TexturedTilesWithinBudget) {
   Random random(29);
-  const Texture textures[] = {checker_texture(64, 64, 16), checker_texture(52, 36, 13)};
-  std::uint64_t constant = 0, anisotropic_constant = 0;
+  const Texture textures[] = {checker_texture(64, 64, 16), checker_texture(52, 36, 13),
+                              nearly_flat_texture(random, 40, 24)};
+  Chosen chosen, anisotropic_chosen;
   for (const Texture& texture : textures) {
     Scene scene = budget_scene(random, 12, 0.3, 1.0);
     add_uvs(random, scene, 0.05, 6.0);
@@ -236,15 +265,16 @@ TEST(ErrorBudget, TexturedTilesWithinBudget) {
             const std::string label =
                 std::string(name_of(filter)) + " " + std::string(name_of(wrap)) + " " +
                 std::string(name_of(derivatives)) + " " + std::string(name_of(shading));
-            const std::uint64_t chosen = check_budget(scene, options, 1.0f / 255, label);
-            (filter == TextureFilter::anisotropic ? anisotropic_constant : constant) += chosen;
+            (filter == TextureFilter::anisotropic ? anisotropic_chosen : chosen) +=
+                check_budget(scene, options, 1.0f / 255, label);
           }
         }
       }
     }
   }
-  EXPECT_GT(constant, 10000u) << "no tile took one colour: the test checks nothing";
-  EXPECT_EQ(anisotropic_constant, 0u) << "a filter without a bound took the budget";
+  EXPECT_GT(chosen.constant, 10000u) << "no tile took one colour: the test checks nothing";
+  EXPECT_GT(chosen.one_texel, 1000u) << "no tile took one texel value: the test checks nothing";
+  EXPECT_EQ(anisotropic_chosen, Chosen{}) << "a filter without a bound took the budget";
 }
 
 // Multisampled targets and methods other than plane equations are drawn exactly.

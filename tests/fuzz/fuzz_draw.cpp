@@ -1229,8 +1229,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 // DrawOptions::error_budget of two codes: every ISA within two codes of its own exact image at
-// every sample, with the same depth, and the reference's choices (its count of fragments given
-// one colour).
+// every sample, with the same depth, and the reference's choices (its counts of fragments given
+// one colour and one texel value per tile).
 void check_budget(const Case& c, std::span<const Output> exact) {
   Case budgeted = c;
   budgeted.options.error_budget = 2.0f / 255.0f;
@@ -1239,7 +1239,8 @@ void check_budget(const Case& c, std::span<const Output> exact) {
     const Output& got = outputs[i];
     const Output& want = exact[i];
     if (got.threw) fail(budgeted, "draw() threw under an error budget", outputs, got.error);
-    if (got.report.fragments_constant != outputs.front().report.fragments_constant) {
+    if (got.report.fragments_constant != outputs.front().report.fragments_constant ||
+        got.report.fragments_one_texel != outputs.front().report.fragments_one_texel) {
       fail(budgeted, "an ISA's error-budget choices differ from the reference's", outputs,
            std::string(name_of(got.isa)));
     }

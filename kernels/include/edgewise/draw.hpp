@@ -130,6 +130,9 @@ struct DrawReport {
   // Of fragments_passed, those written with one colour per triangle or per tile under
   // DrawOptions::error_budget.
   std::uint64_t fragments_constant = 0;
+  // Of fragments_passed, textured ones whose texel was one value for their whole tile under the
+  // budget (the filter not run; the shading still per pixel).
+  std::uint64_t fragments_one_texel = 0;
   Isa isa = Isa::reference;
 };
 
