@@ -1088,7 +1088,7 @@ class ShadingVisitor {
   // The budget's choices for the current triangle.
   detail::ShadeInterval shade_interval_{};
   bool constant_ = false;      // drawn in one colour
-  bool tile_choices_ = false;  // textured: one colour per tile where the budget allows
+  bool tile_choices_ = false;  // textured: each tile decided (measured_texture_tile())
   std::uint32_t constant_colour_ = 0;
   detail::TexturePlanes texture_planes_{};
   bool beyond_budget_[kSetupLanes<Arch>]{};  // of the current group (mark_beyond_budget())

@@ -9,8 +9,8 @@
 // read outside the quad is discarded.
 #pragma once
 
-#include <cstddef>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 

@@ -14,6 +14,11 @@ namespace {
 constexpr double kUnit = 0x1p-24;  // float32's unit roundoff
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// The least magnitude over [low, high]: 0 where it holds 0.
+double least_magnitude(double low, double high) {
+  return low > 0.0 ? low : high < 0.0 ? -high : 0.0;
+}
+
 double clamp01(double v) {
   return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
 }
@@ -438,8 +443,7 @@ bool tile_coordinates(const TexturePlanes& planes, TextureDerivatives derivative
       low = std::min(low, a - b - error);
       high = std::max(high, a - b + error);
     }
-    const double smallest = low > 0.0 ? low : high < 0.0 ? -high : 0.0;
-    return std::max(0.0, smallest / (q_high * q_high) * (1.0 - 0x1p-40) - extra);
+    return std::max(0.0, least_magnitude(low, high) / (q_high * q_high) * (1.0 - 0x1p-40) - extra);
   };
   out.rho_low = std::max({least(planes.s, corner_s, true, s_extra) * width,
                           least(planes.t, corner_t, true, t_extra) * height,
@@ -529,9 +533,7 @@ TileTexture texture_choice(const ShadeInterval& shade, const TileCoordinates& co
   // one texel value allows less (the largest magnitude): giving up there is always allowed.
   double widest[4];
   for (int k = 0; k < 4; ++k) {
-    const double least = shade.low[k] > 0.0    ? shade.low[k]
-                         : shade.high[k] < 0.0 ? -shade.high[k]
-                                               : 0.0;
+    const double least = least_magnitude(shade.low[k], shade.high[k]);
     widest[k] = least > 0.0 ? 2.0 * codes / 255.0 / least : kInfinity;
   }
   double texel_low[4], texel_high[4];
@@ -572,11 +574,6 @@ TileTexture texture_choice(const ShadeInterval& shade, const TileCoordinates& co
   }
   choice.one_texel = one_texel;
   return choice;
-}
-
-// The least nonzero magnitude over [low, high]: 0 where it holds 0.
-double least_magnitude(double low, double high) {
-  return low > 0.0 ? low : high < 0.0 ? -high : 0.0;
 }
 
 }  // namespace
