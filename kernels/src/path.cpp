@@ -1,5 +1,7 @@
 // Paths and their flattening (path.hpp).
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -17,6 +19,33 @@ void check_tolerance(float tolerance, const char* what) {
     throw std::invalid_argument(std::string(what) + ": tolerance " + std::to_string(tolerance) +
                                 " is not positive and finite");
   }
+}
+
+// The fewest equal steps of t that keep the quadratic's float polyline within `tolerance`
+// (path.hpp, "Flattening"); `what` names the caller in the errors.
+std::size_t segments_within(Vec2 p0, Vec2 p1, Vec2 p2, float tolerance, const char* what) {
+  check_tolerance(tolerance, what);
+  double magnitude = 0.0;
+  for (const Vec2 p : {p0, p1, p2})
+    magnitude = std::max({magnitude, std::fabs(double{p.x}), std::fabs(double{p.y})});
+  const double least = least_path_tolerance(magnitude);
+  if (tolerance < least) {
+    std::ostringstream message;
+    message << what << ": tolerance " << tolerance << " px is below " << least
+            << " px, the least that float points with coordinates up to " << magnitude
+            << " px can keep";
+    throw std::invalid_argument(message.str());
+  }
+  // What the chords may use: at least half the tolerance.
+  const double budget = tolerance - path_rounding(magnitude);
+  // In double: |P0 - 2 P1 + P2| exactly enough that n is the formula's. This arithmetic may leave
+  // a chord over the budget by a few ulps only where |d| is about 4 budget n^2 >= 2 tolerance,
+  // so m >= |d| / (4 sqrt(2)) >= tolerance / (2 sqrt(2)): path_rounding()'s slack, 0.08 2^-24 m,
+  // covers that.
+  const double dx = static_cast<double>(p0.x) - 2.0 * p1.x + p2.x;
+  const double dy = static_cast<double>(p0.y) - 2.0 * p1.y + p2.y;
+  const double n = std::ceil(std::sqrt(std::hypot(dx, dy) / (4.0 * budget)));
+  return n < 1.0 ? 1 : static_cast<std::size_t>(n);  // at most kMaxQuadSegments (path.hpp)
 }
 
 // Appends p unless it repeats the last point.
@@ -49,15 +78,16 @@ void Path::close() {
   open_ = false;
 }
 
+double path_rounding(double magnitude) {
+  return 0x1.8p-24 * magnitude + 0x1p-149;
+}
+
+double least_path_tolerance(double magnitude) {
+  return 2.0 * path_rounding(magnitude);
+}
+
 std::size_t quad_segments(Vec2 p0, Vec2 p1, Vec2 p2, float tolerance) {
-  check_tolerance(tolerance, "quad_segments");
-  // In double: |P0 - 2 P1 + P2| exactly enough that n is the formula's.
-  const double dx = static_cast<double>(p0.x) - 2.0 * p1.x + p2.x;
-  const double dy = static_cast<double>(p0.y) - 2.0 * p1.y + p2.y;
-  const double n = std::ceil(std::sqrt(std::hypot(dx, dy) / (4.0 * tolerance)));
-  // A curve millions of tolerances across would ask for more segments than any target shows;
-  // beyond 2^20 the count is capped (the error bound then no longer holds; say so at the caller).
-  return n < 1.0 ? 1 : n > 1048576.0 ? 1048576 : static_cast<std::size_t>(n);
+  return segments_within(p0, p1, p2, tolerance, "quad_segments");
 }
 
 std::vector<Polyline> flatten(const Path& path, float tolerance) {
@@ -83,7 +113,7 @@ std::vector<Polyline> flatten(const Path& path, float tolerance) {
         break;
       case Path::Verb::quad: {
         const Vec2 p0 = current, p1 = c.points[0], p2 = c.points[1];
-        const std::size_t n = quad_segments(p0, p1, p2, tolerance);
+        const std::size_t n = segments_within(p0, p1, p2, tolerance, "flatten");
         for (std::size_t k = 1; k <= n; ++k) {
           // B(t) in double, each point rounded to float once; the last is P2 itself.
           const double t = static_cast<double>(k) / static_cast<double>(n), u = 1.0 - t;

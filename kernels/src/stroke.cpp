@@ -1,8 +1,10 @@
 // Strokes of flattened paths as triangles (path.hpp): a rectangle per segment, a join at each
 // turn, a cap at each open end. The geometry is computed in double and rounded to float once per
 // point.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -45,14 +47,7 @@ Point unit(Point d) {
 class StrokeBuilder {
  public:
   StrokeBuilder(const StrokeStyle& style, float tolerance, std::vector<Vec2>& out)
-      : style_(style), half_(0.5 * style.width), out_(out) {
-    // An inscribed polygon's side of angle a misses its circle by r (1 - cos(a / 2)) (the
-    // sagitta): a <= 2 acos(1 - tolerance / r) keeps it within the tolerance; no side spans
-    // more than a quarter turn, whatever the tolerance.
-    const double ratio = static_cast<double>(tolerance) / half_;
-    max_step_ = ratio < 1.0 ? std::min(2.0 * std::acos(1.0 - ratio), std::numbers::pi / 2)
-                            : std::numbers::pi / 2;
-  }
+      : style_(style), half_(0.5 * style.width), tolerance_(tolerance), out_(out) {}
 
   void polyline(const Polyline& line) {
     std::vector<Point> p;
@@ -88,9 +83,9 @@ class StrokeBuilder {
   }
 
   // Triangles around `centre` from centre + from, turning by `angle` (signed), each side within
-  // the tolerance of the circle of radius |from|.
+  // the tolerance of the circle of radius |from| = half_ once its corners are rounded to float.
   void fan(Point centre, Point from, double angle) {
-    const int steps = std::max(1, static_cast<int>(std::ceil(std::fabs(angle) / max_step_)));
+    const int steps = std::max(1, static_cast<int>(std::ceil(std::fabs(angle) / max_step(centre))));
     Point previous = centre + from;
     for (int k = 1; k <= steps; ++k) {
       const Point next = centre + rotated(from, angle * k / steps);
@@ -161,9 +156,32 @@ class StrokeBuilder {
     }
   }
 
+  // The largest angle an arc's side around `centre` may span. An inscribed polygon's side of
+  // angle a misses its circle by r (1 - cos(a / 2)) (the sagitta), and rounding its corners to
+  // float moves it by at most path_rounding(m) more, m bounding the arc's coordinates (path.hpp,
+  // "Stroking"): a <= 2 acos(1 - (tolerance - path_rounding(m)) / r) keeps it within the
+  // tolerance. No side spans more than a quarter turn, whatever the tolerance. The least
+  // tolerance leaves at least half of it to the sagitta, so a full circle takes at most
+  // pi sqrt(2^24 / 3), about 7,400, sides.
+  double max_step(Point centre) const {
+    const double magnitude = std::max(std::fabs(centre.x), std::fabs(centre.y)) + half_;
+    const double least = least_path_tolerance(magnitude);
+    if (tolerance_ < least) {
+      std::ostringstream message;
+      message << "stroke: tolerance " << tolerance_ << " px is below " << least
+              << " px, the least that float points with coordinates up to " << magnitude
+              << " px (an arc of radius " << half_ << " around (" << centre.x << ", " << centre.y
+              << ")) can keep";
+      throw std::invalid_argument(message.str());
+    }
+    const double ratio = (tolerance_ - path_rounding(magnitude)) / half_;
+    return ratio < 1.0 ? std::min(2.0 * std::acos(1.0 - ratio), std::numbers::pi / 2)
+                       : std::numbers::pi / 2;
+  }
+
   StrokeStyle style_;
-  double half_;      // half the width: the stroke's reach from the path
-  double max_step_;  // the largest angle an arc's side may span
+  double half_;       // half the width: the stroke's reach from the path
+  double tolerance_;  // how far an arc's sides may stray from their circle
   std::vector<Vec2>& out_;
 };
 

@@ -30,6 +30,11 @@ P bezier(P p0, P p1, P p2, double t) {
           u * u * p0.y + 2 * t * u * p1.y + t * t * p2.y};
 }
 
+double largest_coordinate(P p0, P p1, P p2) {
+  return std::max({std::fabs(p0.x), std::fabs(p0.y), std::fabs(p1.x), std::fabs(p1.y),
+                   std::fabs(p2.x), std::fabs(p2.y)});
+}
+
 double distance_to_segment(P p, P a, P b) {
   const double dx = b.x - a.x, dy = b.y - a.y;
   const double length_sq = dx * dx + dy * dy;
@@ -72,9 +77,9 @@ double triangle_area_sum(const std::vector<Vec2>& triangles) {
   return sum;
 }
 
-// Flattening: every step's chord within the tolerance of the curve at the same parameter (plus
-// the points' rounding to float: half an ulp of each coordinate, below 2^-24 of the largest
-// magnitude, twice), and one step fewer would not be.
+// Flattening: every step's chord, between the float points, within the tolerance of the curve at
+// the same parameter (sampled), and one step fewer would not keep the exact chords within what
+// the tolerance leaves them after the points' rounding.
 TEST(Path, QuadSegmentsAreTheFewestEqualStepsWithinTheTolerance) {
   Random random(8);
   for (int trial = 0; trial < 400; ++trial) {
@@ -93,7 +98,6 @@ TEST(Path, QuadSegmentsAreTheFewestEqualStepsWithinTheTolerance) {
     const std::vector<Polyline> lines = flatten(path, tolerance);
     ASSERT_EQ(lines.size(), 1u);
     ASSERT_EQ(lines[0].points.size(), n + 1);
-    const double rounding = 4.0 * 0x1p-24 * 3.0 * scale;
     double worst = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
       const P a{lines[0].points[k].x, lines[0].points[k].y};
@@ -105,13 +109,233 @@ TEST(Path, QuadSegmentsAreTheFewestEqualStepsWithinTheTolerance) {
         worst = std::max(worst, std::hypot(curve.x - chord.x, curve.y - chord.y));
       }
     }
-    EXPECT_LE(worst, tolerance + rounding) << "trial " << trial << ", " << n << " steps";
+    EXPECT_LE(worst, tolerance) << "trial " << trial << ", " << n << " steps";
     const double d = std::hypot(q0.x - 2 * q1.x + q2.x, q0.y - 2 * q1.y + q2.y);
     if (n > 1) {
       // n - 1 equal steps miss the curve by d / (4 (n - 1)^2) at a step's middle.
-      EXPECT_GT(d / (4.0 * static_cast<double>(n - 1) * static_cast<double>(n - 1)), tolerance)
+      EXPECT_GT(d / (4.0 * static_cast<double>(n - 1) * static_cast<double>(n - 1)),
+                tolerance - path_rounding(largest_coordinate(q0, q1, q2)))
           << "trial " << trial;
     }
+  }
+}
+
+// The largest |D(s)| over s in [0, 1], D(s) = c0 + c1 s + c2 s^2 (vectors): at an end or where
+// D . D' = 0, a cubic. Its derivative's roots cut [0, 1] into pieces on which it is monotone;
+// bisection finds its one root in a piece, if any, to double precision.
+double largest_norm(P c0, P c1, P c2) {
+  const auto dot = [](P a, P b) { return a.x * b.x + a.y * b.y; };
+  const auto norm = [&](double s) {
+    return std::hypot(c0.x + s * (c1.x + s * c2.x), c0.y + s * (c1.y + s * c2.y));
+  };
+  const double a3 = 2 * dot(c2, c2), a2 = 3 * dot(c1, c2), a1 = dot(c1, c1) + 2 * dot(c0, c2);
+  const double a0 = dot(c0, c1);
+  const auto cubic = [&](double s) { return ((a3 * s + a2) * s + a1) * s + a0; };
+  std::vector<double> cuts{0.0, 1.0};
+  // 3 a3 s^2 + 2 a2 s + a1 = 0, by the stable form of the quadratic formula.
+  const double qa = 3 * a3, qb = 2 * a2, qc = a1;
+  if (qa != 0.0) {
+    const double disc = qb * qb - 4 * qa * qc;
+    if (disc >= 0.0) {
+      const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+      cuts.push_back(q / qa);
+      if (q != 0.0) cuts.push_back(qc / q);
+    }
+  } else if (qb != 0.0) {
+    cuts.push_back(-qc / qb);
+  }
+  std::erase_if(cuts, [](double s) { return !(s >= 0.0 && s <= 1.0); });
+  std::sort(cuts.begin(), cuts.end());
+  double best = std::max(norm(0.0), norm(1.0));
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    double lo = cuts[i], hi = cuts[i + 1];
+    const bool rising = cubic(lo) < 0.0;
+    if ((cubic(hi) < 0.0) == rising) continue;  // no root inside
+    for (int k = 0; k < 200 && lo < hi; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;
+      ((cubic(mid) < 0.0) == rising ? lo : hi) = mid;
+    }
+    best = std::max({best, norm(lo), norm(hi)});
+  }
+  return best;
+}
+
+// How far the polyline of flatten() strays from the curve of q0, q1, q2 (the float control
+// points, exactly): for each step k of n, the largest distance between B(t) and the point of the
+// polyline at the same fraction of the step, exactly (largest_norm). The distance from the curve
+// to the polyline is at most that. D(s) = B(t_k + s h) - ((1 - s) Q_k + s Q_{k+1}) = c0 + c1 s
+// + c2 s^2 with c2 = h^2 d, c0 = B(t_k) - Q_k and c0 + c1 + c2 = B(t_{k+1}) - Q_{k+1}. The
+// double arithmetic here errs by a few 2^-53 m, far below the slack of path_rounding() (at least
+// 0.08 2^-24 m) that keeps a correct flattening away from the tolerance.
+double parametric_deviation(P q0, P q1, P q2, const std::vector<Vec2>& points) {
+  const std::size_t n = points.size() - 1;
+  const double h = 1.0 / static_cast<double>(n);
+  const P d{q0.x - 2 * q1.x + q2.x, q0.y - 2 * q1.y + q2.y};
+  const P c2{h * h * d.x, h * h * d.y};
+  double worst = 0.0;
+  P e0{0.0, 0.0};  // B(0) - Q_0: P0 is kept exactly
+  for (std::size_t k = 0; k < n; ++k) {
+    const P b = bezier(q0, q1, q2, static_cast<double>(k + 1) / static_cast<double>(n));
+    const P e1{b.x - points[k + 1].x, b.y - points[k + 1].y};
+    worst = std::max(worst, largest_norm(e0, {e1.x - e0.x - c2.x, e1.y - e0.y - c2.y}, c2));
+    e0 = e1;
+  }
+  return worst;
+}
+
+// The polyline's point at each of the n + 1 steps. flatten() drops a point equal to the one
+// before it (at a cusp two steps' points may round to the same float): at each step the point
+// nearer B(t_k) of the current and the next polyline point, so that a dropped repeat comes back.
+// Fewer than n + 1 points come back if the polyline does not follow the steps.
+std::vector<Vec2> step_points(P q0, P q1, P q2, std::size_t n, const std::vector<Vec2>& polyline) {
+  std::vector<Vec2> points{polyline.front()};
+  std::size_t j = 0;
+  for (std::size_t k = 1; k <= n; ++k) {
+    const P b = bezier(q0, q1, q2, static_cast<double>(k) / static_cast<double>(n));
+    const auto distance = [&](std::size_t i) {
+      return std::hypot(polyline[i].x - b.x, polyline[i].y - b.y);
+    };
+    if (j + 1 < polyline.size() && distance(j + 1) <= distance(j)) ++j;
+    points.push_back(polyline[j]);
+  }
+  if (j + 1 != polyline.size()) points.pop_back();
+  return points;
+}
+
+// The least float tolerance flatten() accepts for coordinates up to `magnitude`.
+float least_float_tolerance(double magnitude) {
+  const double least = least_path_tolerance(magnitude);
+  float f = static_cast<float>(least);
+  if (f < least) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+// The accepted range, log-spaced from its least value to 64 px (both included), and far beyond.
+std::vector<float> tolerances_across_range(double magnitude, int count) {
+  const double lo = least_float_tolerance(magnitude), hi = 64.0;
+  std::vector<float> tolerances;
+  for (int i = 0; i < count; ++i)
+    tolerances.push_back(
+        i == 0 ? static_cast<float>(lo)
+        : i == count - 1
+            ? static_cast<float>(hi)
+            : static_cast<float>(lo * std::pow(hi / lo, static_cast<double>(i) / (count - 1))));
+  tolerances.push_back(std::numeric_limits<float>::max());
+  return tolerances;
+}
+
+// The flattening's guarantee across the whole accepted range of tolerances, with the rounding
+// of its points to float included: quadratics across the guard band (+-32768 px), at the tool's
+// sheet's magnitudes (up to 960 px, and its own curves), near the origin, and the one that takes
+// the most segments. Tolerances just below the least accepted one, and bad ones, throw.
+TEST(Path, FlatteningKeepsEveryToleranceOfItsRange) {
+  Random random(81);
+  struct Curve {
+    P p0, p1, p2;
+  };
+  std::vector<Curve> curves;
+  const auto random_point = [&random](double x0, double x1, double y0, double y1) {
+    return P{random.uniform(x0, x1), random.uniform(y0, y1)};
+  };
+  for (int i = 0; i < 60; ++i) {
+    const double band = 32768.0;
+    curves.push_back({random_point(-band, band, -band, band),
+                      random_point(-band, band, -band, band),
+                      random_point(-band, band, -band, band)});
+  }
+  for (int i = 0; i < 60; ++i) {  // a small curve somewhere in the guard band
+    const P at = random_point(-32768, 32768, -32768, 32768);
+    const double size = random.log_uniform(1.0, 1000.0);
+    const auto near = [&] {
+      return P{at.x + random.uniform(-size, size), at.y + random.uniform(-size, size)};
+    };
+    curves.push_back({near(), near(), near()});
+  }
+  for (int i = 0; i < 60; ++i) {
+    curves.push_back(
+        {random_point(0, 960, 0, 540), random_point(0, 960, 0, 540), random_point(0, 960, 0, 540)});
+  }
+  for (int i = 0; i < 7; ++i) {  // edgewise-strokes' sheet
+    const double y = 345.0 + 27.0 * i;
+    curves.push_back({{40, y}, {230, y - 100}, {420, y}});
+  }
+  for (int i = 0; i < 20; ++i) {
+    const double size = random.log_uniform(0.01, 10.0);
+    curves.push_back({random_point(-size, size, -size, size),
+                      random_point(-size, size, -size, size),
+                      random_point(-size, size, -size, size)});
+  }
+  curves.push_back({{32768, 32768}, {-32768, -32768}, {32768, 32768}});  // |d| = 4 sqrt(2) m
+  std::size_t most = 0;
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    const auto f = [](P p) { return Vec2{static_cast<float>(p.x), static_cast<float>(p.y)}; };
+    const Vec2 v0 = f(curves[c].p0), v1 = f(curves[c].p1), v2 = f(curves[c].p2);
+    const P q0{v0.x, v0.y}, q1{v1.x, v1.y}, q2{v2.x, v2.y};
+    const double m = largest_coordinate(q0, q1, q2);
+    Path path;
+    path.move_to(v0);
+    path.quad_to(v1, v2);
+    for (const float tolerance : tolerances_across_range(m, 9)) {
+      const std::size_t n = quad_segments(v0, v1, v2, tolerance);
+      const std::vector<Polyline> lines = flatten(path, tolerance);
+      ASSERT_EQ(lines.size(), 1u);
+      ASSERT_LE(n, kMaxQuadSegments);
+      most = std::max(most, n);
+      const std::vector<Vec2> points = step_points(q0, q1, q2, n, lines[0].points);
+      ASSERT_EQ(points.size(), n + 1) << "curve " << c << ", tolerance " << tolerance;
+      EXPECT_LE(parametric_deviation(q0, q1, q2, points), tolerance)
+          << "curve " << c << " (largest coordinate " << m << "), tolerance " << tolerance << ", "
+          << n << " steps";
+    }
+    // Below the range, and bad tolerances.
+    const float below = std::nextafter(least_float_tolerance(m), 0.0f);
+    for (const float bad : {below, 0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(),
+                            std::numeric_limits<float>::infinity()}) {
+      EXPECT_THROW(quad_segments(v0, v1, v2, bad), std::invalid_argument) << "curve " << c;
+      EXPECT_THROW(flatten(path, bad), std::invalid_argument) << "curve " << c;
+      EXPECT_THROW(stroke(path, StrokeStyle{}, bad), std::invalid_argument) << "curve " << c;
+    }
+  }
+  // The last curve takes nearly kMaxQuadSegments at its least tolerance: the bound is tight.
+  EXPECT_GT(most, kMaxQuadSegments - 10);
+}
+
+// Arcs (round joins and caps) keep their tolerance after their corners' rounding, across the
+// accepted range: full circles (a dot's round cap) around centres across the guard band and at
+// the sheet's magnitudes. Each triangle of the fan is (centre, corner, next corner): the side
+// between the corners strays from the circle by at most its corners' distances from it outwards
+// (|X - C| is convex along a segment) and by r minus the side's distance from the centre inwards.
+TEST(Path, ArcsKeepEveryToleranceOfItsRange) {
+  Random random(82);
+  for (int trial = 0; trial < 80; ++trial) {
+    const double band = trial < 50 ? 32768.0 : 960.0;
+    const Vec2 centre{static_cast<float>(random.uniform(-band, band)),
+                      static_cast<float>(random.uniform(-band, band))};
+    StrokeStyle style;
+    style.width = static_cast<float>(random.log_uniform(0.5, 200.0));
+    style.cap = LineCap::round;
+    Path dot;
+    dot.move_to(centre);
+    const P c{centre.x, centre.y};
+    const double r = 0.5 * style.width;
+    const double m = std::max(std::fabs(c.x), std::fabs(c.y)) + r;
+    for (const float tolerance : tolerances_across_range(m, 7)) {
+      const std::vector<Vec2> triangles = stroke(dot, style, tolerance);
+      ASSERT_GE(triangles.size(), 12u);
+      double worst = 0.0;
+      for (std::size_t t = 0; t < triangles.size(); t += 3) {
+        const P a{triangles[t + 1].x, triangles[t + 1].y},
+            b{triangles[t + 2].x, triangles[t + 2].y};
+        worst = std::max({worst, std::hypot(a.x - c.x, a.y - c.y) - r,
+                          std::hypot(b.x - c.x, b.y - c.y) - r, r - distance_to_segment(c, a, b)});
+      }
+      EXPECT_LE(worst, tolerance) << "trial " << trial << ": centre (" << c.x << ", " << c.y
+                                  << "), radius " << r << ", tolerance " << tolerance;
+    }
+    EXPECT_THROW(stroke(dot, style, std::nextafter(least_float_tolerance(m), 0.0f)),
+                 std::invalid_argument)
+        << "trial " << trial;
   }
 }
 

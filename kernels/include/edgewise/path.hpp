@@ -4,20 +4,30 @@
 // through draw(): anti-aliased by the target's samples (multisampling) and resolve().
 //
 // Flattening. A quadratic B(t) = (1 - t)^2 P0 + 2 t (1 - t) P1 + t^2 P2 is split into n equal
-// steps of t. On a step of length h the chord misses the curve by exactly |P0 - 2 P1 + P2| h^2 s
-// (1 - s) at the step's fraction s, at most |P0 - 2 P1 + P2| h^2 / 4 (at its middle), so
-//     n = ceil(sqrt(|P0 - 2 P1 + P2| / (4 tolerance))), at least 1,
-// keeps every point of the polyline within `tolerance` of the curve at the same t, and no fewer
-// equal steps do (quad_segments(), tested against the curve).
+// steps of t. On a step of length h the exact chord misses the curve by |d| h^2 s (1 - s) at the
+// step's fraction s, at most |d| h^2 / 4 (at its middle), d = P0 - 2 P1 + P2. The polyline's
+// points are not exact: each interior one is B(t) computed in double and rounded to float, which
+// moves it by at most r = 1.5 2^-24 m + 2^-149, m the largest |coordinate| of P0, P1 and P2
+// (path_rounding()); P0 and P2 are kept exactly. Between two points the polyline strays from the
+// exact chord by a blend of their two offsets, at most r, so
+//     n = ceil(sqrt(|d| / (4 (tolerance - r)))), at least 1,
+// keeps every point of the polyline within |d| h^2 / 4 + r <= tolerance of the curve at the same
+// t, and no fewer equal steps keep the chords within tolerance - r (quad_segments(), tested
+// against the curve). A tolerance below least_path_tolerance(m) = 2 r is refused: float points of
+// that magnitude cannot keep it with half of it left for the chords. That half bounds n too:
+// |d| <= 4 sqrt(2) m and m / tolerance <= 2^24 / 3 give n <= 3978 (kMaxQuadSegments).
 //
 // Stroking. Each segment becomes a rectangle of the stroke's width (two triangles); joins fill
 // the outer side of each turn (miter: up to miter_limit times the half width from the vertex,
 // else a bevel; round: an arc; bevel: a triangle); open subpaths end in caps (butt: none; square:
 // half a width beyond the end; round: a half disk). Arcs are polygons inscribed in their circle,
-// with as many sides as keep them within `tolerance` of it. The triangles overlap at joins and
-// share edges along each segment: paint them opaque (painting overwrites, so overlaps cost
-// nothing), with multisampling for anti-aliasing; blending each triangle by its exact area would
-// double-count the overlaps and leak at the shared edges (conflation).
+// with as many sides as keep them within `tolerance` of it once their corners are rounded to
+// float: the sides' sagitta is kept within tolerance - r, r = path_rounding(m) for the arc's
+// coordinates, m = max(|cx|, |cy|) + the half width; a tolerance below 2 r is refused. The
+// triangles overlap at joins and share edges along each segment: paint them opaque (painting
+// overwrites, so overlaps cost nothing), with multisampling for anti-aliasing; blending each
+// triangle by its exact area would double-count the overlaps and leak at the shared edges
+// (conflation).
 #pragma once
 
 #include <cstddef>
@@ -71,14 +81,31 @@ struct Polyline {
   bool closed = false;
 };
 
+// The most that rounding a point computed in double to float moves it, for a point whose exact
+// coordinates are at most `magnitude` in absolute value: 1.5 2^-24 magnitude + 2^-149 px. Half an
+// ulp per coordinate is at most 2^-24 magnitude (2^-150 among subnormals), the double arithmetic
+// before it adds below 2^-48 magnitude, and sqrt(2) (2^-24 + 2^-47) < 1.5 2^-24 over the two
+// coordinates; the 6% to spare also covers the few ulps of the segment and side counts' own
+// double arithmetic.
+double path_rounding(double magnitude);
+
+// The least tolerance flatten() and stroke() accept for coordinates up to `magnitude`:
+// 2 path_rounding(magnitude), about 1.8e-7 px per px of magnitude (0.0059 px at 32768 px, 1/8 px
+// at 700,000 px).
+double least_path_tolerance(double magnitude);
+
+// The most segments quad_segments() returns for any tolerance it accepts.
+inline constexpr std::size_t kMaxQuadSegments = 3978;
+
 // The segment count of a quadratic for `tolerance` (the formula at the top); 1 for a straight
-// or degenerate curve, and at most 2^20 (a curve a million tolerances across; beyond that the
-// bound is not kept). Throws std::invalid_argument for a tolerance that is not positive and
-// finite.
+// or degenerate curve, at most kMaxQuadSegments. Throws std::invalid_argument for a tolerance
+// that is not finite or is below least_path_tolerance() of the control points' largest
+// |coordinate| (in particular one that is not positive).
 std::size_t quad_segments(Vec2 p0, Vec2 p1, Vec2 p2, float tolerance);
 
 // The path's subpaths as polylines within `tolerance` of it. Throws std::invalid_argument for a
-// tolerance that is not positive and finite, or a non-finite point.
+// tolerance that is not positive and finite, one that a curve's coordinates cannot keep (as
+// quad_segments()), or a non-finite point.
 std::vector<Polyline> flatten(const Path& path, float tolerance = kDefaultPathTolerance);
 
 enum class LineCap : std::uint8_t { butt, round, square };
@@ -95,7 +122,8 @@ struct StrokeStyle {
 // The stroke's triangles, three points each, in pixel coordinates. Zero-length segments are
 // skipped; a subpath of one point gets the dot of its cap (round: a disk, square: a square,
 // butt: nothing). Throws std::invalid_argument for a width or miter limit that is not positive
-// and finite (miter_limit at least 1), and what flatten() throws.
+// and finite (miter_limit at least 1), a tolerance that an arc's coordinates cannot keep (the
+// stroking rule at the top), and what flatten() throws.
 std::vector<Vec2> stroke(const Path& path, const StrokeStyle& style,
                          float tolerance = kDefaultPathTolerance);
 
