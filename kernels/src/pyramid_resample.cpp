@@ -144,68 +144,66 @@ class TexelCodec {
   double alpha_[256];
 };
 
-// Every texel of a w x h image of linear RGBA doubles.
-struct LinearImage {
-  std::int32_t width;
-  std::int32_t height;
+// Rows [first_row, first_row + height) of an image of linear RGBA doubles, `width` texels each.
+struct LinearRows {
+  std::int32_t width = 0;
+  std::int32_t first_row = 0;
+  std::int32_t height = 0;
   std::vector<double> rgba;
   double* texel(std::int32_t x, std::int32_t y) {
-    return rgba.data() + (static_cast<std::size_t>(y) * width + x) * 4;
+    return rgba.data() + (static_cast<std::size_t>(y - first_row) * width + x) * 4;
   }
 };
 
-// Horizontal pass: decodes the source and filters its rows to `width` texels (decoding only, when
-// the width stays). The result, 32 bytes per texel, is the resampler's only large buffer.
-LinearImage filter_rows(const TexelCodec& codec, PyramidFilter filter, const LevelView& source,
-                        std::int32_t width) {
-  LinearImage out{width, source.height,
-                  std::vector<double>(static_cast<std::size_t>(width) * source.height * 4)};
+// Output rows decoded and filtered per band: the band's rows, 32 bytes per texel, are the
+// resampler's only large buffer, so building a level takes memory in proportion to a band of
+// its source rather than to the whole of it.
+constexpr std::int32_t kBandRows = 16;
+
+// Horizontal pass over source rows [rows.first_row, rows.first_row + rows.height): decodes
+// them and filters each to rows.width texels (decoding only, when the width stays).
+void filter_rows(const TexelCodec& codec, const AxisTaps* axis, const LevelView& source,
+                 LinearRows& rows, std::vector<double>& decoded) {
   const std::size_t row = static_cast<std::size_t>(source.width);
-  if (width == source.width) {
-    for (std::int32_t y = 0; y < source.height; ++y) {
-      for (std::int32_t x = 0; x < width; ++x)
-        codec.decode(source.texels, y * row + x, out.texel(x, y));
+  const std::int32_t end = rows.first_row + rows.height;
+  for (std::int32_t y = rows.first_row; y < end; ++y) {
+    if (axis == nullptr) {
+      for (std::int32_t x = 0; x < rows.width; ++x)
+        codec.decode(source.texels, y * row + x, rows.texel(x, y));
+      continue;
     }
-    return out;
-  }
-  const AxisTaps axis = axis_taps(filter, source.width, width);
-  std::vector<double> decoded(row * 4);
-  for (std::int32_t y = 0; y < source.height; ++y) {
     for (std::int32_t x = 0; x < source.width; ++x) {
       codec.decode(source.texels, y * row + x, decoded.data() + x * 4);
     }
-    for (std::int32_t x = 0; x < width; ++x) {
+    for (std::int32_t x = 0; x < rows.width; ++x) {
       double sum[4] = {0.0, 0.0, 0.0, 0.0};
-      for (std::size_t i = axis.first[x]; i < axis.first[x + 1]; ++i) {
-        const double* texel = decoded.data() + static_cast<std::size_t>(axis.taps[i].index) * 4;
+      for (std::size_t i = axis->first[x]; i < axis->first[x + 1]; ++i) {
+        const double* texel = decoded.data() + static_cast<std::size_t>(axis->taps[i].index) * 4;
         for (int ch = 0; ch < 4; ++ch)
-          sum[ch] += axis.taps[i].weight * texel[ch];
+          sum[ch] += axis->taps[i].weight * texel[ch];
       }
-      std::copy(sum, sum + 4, out.texel(x, y));
+      std::copy(sum, sum + 4, rows.texel(x, y));
     }
   }
-  return out;
 }
 
-// Vertical pass: filters the columns to `height` texels (none, when the height stays) and encodes.
-void filter_columns_and_encode(const TexelCodec& codec, PyramidFilter filter, LinearImage& image,
-                               std::byte* destination, std::int32_t height) {
-  const std::size_t row = static_cast<std::size_t>(image.width);
-  if (height == image.height) {
-    for (std::int32_t y = 0; y < height; ++y) {
-      for (std::int32_t x = 0; x < image.width; ++x)
-        codec.encode(image.texel(x, y), destination, y * row + x);
-    }
-    return;
-  }
-  const AxisTaps axis = axis_taps(filter, image.height, height);
-  for (std::int32_t y = 0; y < height; ++y) {
-    for (std::int32_t x = 0; x < image.width; ++x) {
+// Vertical pass for output rows [y0, y1): filters the columns of `rows` (which hold every source
+// row those output rows read) and encodes (no filtering when the height stays: output row y is
+// source row y).
+void filter_columns_and_encode(const TexelCodec& codec, const AxisTaps* axis, LinearRows& rows,
+                               std::byte* destination, std::int32_t y0, std::int32_t y1) {
+  const std::size_t row = static_cast<std::size_t>(rows.width);
+  for (std::int32_t y = y0; y < y1; ++y) {
+    for (std::int32_t x = 0; x < rows.width; ++x) {
+      if (axis == nullptr) {
+        codec.encode(rows.texel(x, y), destination, y * row + x);
+        continue;
+      }
       double sum[4] = {0.0, 0.0, 0.0, 0.0};
-      for (std::size_t i = axis.first[y]; i < axis.first[y + 1]; ++i) {
-        const double* texel = image.texel(x, axis.taps[i].index);
+      for (std::size_t i = axis->first[y]; i < axis->first[y + 1]; ++i) {
+        const double* texel = rows.texel(x, axis->taps[i].index);
         for (int ch = 0; ch < 4; ++ch)
-          sum[ch] += axis.taps[i].weight * texel[ch];
+          sum[ch] += axis->taps[i].weight * texel[ch];
       }
       codec.encode(sum, destination, y * row + x);
     }
@@ -218,8 +216,31 @@ void resample_level(TexelFormat format, ColorEncoding encoding, PyramidFilter fi
                     const LevelView& source, std::byte* destination, std::int32_t width,
                     std::int32_t height) {
   const TexelCodec codec(format, encoding);
-  LinearImage rows = filter_rows(codec, filter, source, width);
-  filter_columns_and_encode(codec, filter, rows, destination, height);
+  const AxisTaps horizontal = axis_taps(filter, source.width, width);
+  const AxisTaps vertical = axis_taps(filter, source.height, height);
+  const AxisTaps* h = width == source.width ? nullptr : &horizontal;
+  const AxisTaps* v = height == source.height ? nullptr : &vertical;
+  std::vector<double> decoded(static_cast<std::size_t>(source.width) * 4);
+  LinearRows rows;
+  rows.width = width;
+  for (std::int32_t y0 = 0; y0 < height; y0 += kBandRows) {
+    const std::int32_t y1 = std::min(height, y0 + kBandRows);
+    // The source rows the band's output rows read (the band itself when the height stays).
+    std::int32_t low = y0, high = y1;
+    if (v != nullptr) {
+      low = std::numeric_limits<std::int32_t>::max();
+      high = 0;
+      for (std::size_t i = v->first[y0]; i < v->first[y1]; ++i) {
+        low = std::min(low, v->taps[i].index);
+        high = std::max(high, v->taps[i].index + 1);
+      }
+    }
+    rows.first_row = low;
+    rows.height = high - low;
+    rows.rgba.resize(static_cast<std::size_t>(rows.height) * width * 4);
+    filter_rows(codec, h, source, rows, decoded);
+    filter_columns_and_encode(codec, v, rows, destination, y0, y1);
+  }
 }
 
 }  // namespace edgewise::detail
