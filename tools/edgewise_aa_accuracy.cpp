@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <numbers>
@@ -21,6 +20,7 @@
 #include "aa_accuracy/coverage_modes.hpp"
 #include "common/isa_options.hpp"
 #include "common/median.hpp"
+#include "common/output_file.hpp"
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
 #include "common/value_options.hpp"
@@ -101,8 +101,7 @@ int run(const Arguments& arguments) {
             << "mean " << std::setw(11) << conflation.mean() << "  worst " << conflation.worst
             << "\n";
   if (arguments.csv) {
-    std::ofstream csv(*arguments.csv);
-    if (!csv) throw tools::UsageError(*arguments.csv + ": cannot create");
+    tools::OutputStream csv(*arguments.csv);
     csv << "mode,samples,edge_mean_error,edge_worst_error,star_rmse,star_worst_error,"
            "ns_per_triangle,isa\n";
     for (int m = 0; m < kAaModes; ++m) {
@@ -110,7 +109,7 @@ int run(const Arguments& arguments) {
           << edge[m].mean() << ',' << edge[m].worst << ',' << star_rmse[m] << ',' << star_worst[m]
           << ',' << nanoseconds[m] << ',' << name_of(isa) << '\n';
     }
-    if (!csv) throw tools::UsageError(*arguments.csv + ": write error");
+    csv.finish();
   }
   return 0;
 }

@@ -21,8 +21,10 @@
 #include <string_view>
 #include <vector>
 
+#include "common/input_file.hpp"
 #include "common/isa_options.hpp"
 #include "common/option_values.hpp"
+#include "common/output_file.hpp"
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
 #include "common/value_options.hpp"
@@ -91,10 +93,31 @@ std::optional<float> parse_coordinate(std::string_view text) {
 }
 
 // Three vertices per triangle, in input order.
+// A triangle's line is short; a longer one is not this format (a binary file, /dev/zero on
+// standard input), refused before it fills memory.
+constexpr std::size_t kMaxLineLength = 4096;
+
+// The next line of `in` without its newline, into `line`; false at the end of the input. Throws
+// InputError for a line longer than kMaxLineLength.
+bool read_line(std::istream& in, std::string& line, const std::string& where) {
+  line.clear();
+  std::streambuf& buffer = *in.rdbuf();
+  for (auto c = buffer.sbumpc(); c != std::char_traits<char>::eof(); c = buffer.sbumpc()) {
+    if (c == '\n') return true;
+    if (line.size() == kMaxLineLength) {
+      throw InputError(where + "a line longer than " + std::to_string(kMaxLineLength) +
+                       " characters: not a list of triangles");
+    }
+    line.push_back(static_cast<char>(c));
+  }
+  return !line.empty();
+}
+
 std::vector<Vec2> read_triangles(std::istream& in, const std::string& name) {
   std::vector<Vec2> vertices;
   std::string line;
-  for (std::size_t line_number = 1; std::getline(in, line); ++line_number) {
+  for (std::size_t line_number = 1;
+       read_line(in, line, name + ":" + std::to_string(line_number) + ": "); ++line_number) {
     std::string_view rest(line);
     rest = rest.substr(0, rest.find('#'));
     const auto where = [&] { return name + ":" + std::to_string(line_number) + ": "; };
@@ -500,6 +523,7 @@ int run(const Arguments& arguments) {
   if (arguments.triangles == "-") {
     vertices = read_triangles(std::cin, "<stdin>");
   } else {
+    tools::require_regular_file(arguments.triangles);
     std::ifstream file(arguments.triangles);
     if (!file) {
       throw InputError(arguments.triangles + ": cannot open: " + std::strerror(errno));
@@ -523,11 +547,9 @@ int run(const Arguments& arguments) {
     if (!std::cout) throw InputError("cannot write to standard output");
     return 0;
   }
-  std::ofstream out(*arguments.output);
-  if (!out) throw InputError(*arguments.output + ": cannot create: " + std::strerror(errno));
+  tools::OutputStream out(*arguments.output);
   list_coverage(vertices, arguments.target, arguments.area ? 0 : arguments.samples, isa, out);
-  out.close();
-  if (!out) throw InputError(*arguments.output + ": write error");
+  out.finish();
   return 0;
 }
 

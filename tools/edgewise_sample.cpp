@@ -102,7 +102,7 @@ int run(const SampleSettings& settings) {
 
   const auto load_start = Clock::now();
   const LoadedTexture loaded =
-      load_texture(settings.texture_path, settings.srgb, build_for(settings));
+      load_texture(settings.texture_path, settings.srgb, build_for(settings), settings.limits);
   const double load_seconds = seconds_since(load_start);
 
   const std::size_t chunk_size = static_cast<std::size_t>(

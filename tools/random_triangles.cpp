@@ -5,9 +5,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/option_values.hpp"
+#include "common/output_file.hpp"
 #include "common/run_tool.hpp"
 #include "common/value_options.hpp"
 #include "edgewise/coverage.hpp"
@@ -199,12 +200,9 @@ int run(const Arguments& arguments) {
   const int width = arguments.width, height = arguments.height;
   const std::uint64_t count = arguments.count, seed = arguments.seed;
   const std::string& output = arguments.output;
-  std::ofstream file;
-  if (!output.empty()) {
-    file.open(output);
-    if (!file) throw std::runtime_error(output + ": cannot create");
-  }
-  std::ostream& out = output.empty() ? std::cout : file;
+  std::optional<edgewise::tools::OutputStream> file;
+  if (!output.empty()) file.emplace(output);
+  std::ostream& out = output.empty() ? std::cout : *file;
   out << "# edgewise-random-triangles " << width << ' ' << height << ' ' << count << " --seed "
       << seed << '\n';
   Generators generators(width, height, seed);
@@ -213,8 +211,8 @@ int run(const Arguments& arguments) {
     out << text(tri.v[0].x) << ' ' << text(tri.v[0].y) << ' ' << text(tri.v[1].x) << ' '
         << text(tri.v[1].y) << ' ' << text(tri.v[2].x) << ' ' << text(tri.v[2].y) << '\n';
   }
-  out.flush();
-  if (!out) throw std::runtime_error("write error");
+  // Standard output is checked by run_tool.
+  if (file) file->finish();
   return 0;
 }
 

@@ -5,12 +5,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/output_file.hpp"
 #include "draw_probes.hpp"
 #include "edgewise/edgewise.hpp"
 
@@ -99,7 +99,7 @@ void separation_chart(double near, double far, int points, StudyOutput& out) {
 
 // Binary PPM: a format plot_atlas.py reads through matplotlib without a library of our own.
 void write_ppm(const std::filesystem::path& path, const Framebuffer& target) {
-  std::ofstream file(path, std::ios::binary);
+  tools::OutputStream file(path.string());
   file << "P6\n" << target.width() << ' ' << target.height() << "\n255\n";
   for (int y = 0; y < target.height(); ++y) {
     for (int x = 0; x < target.width(); ++x) {
@@ -109,7 +109,7 @@ void write_ppm(const std::filesystem::path& path, const Framebuffer& target) {
       file.write(rgb, 3);
     }
   }
-  if (!file.flush()) throw std::runtime_error("cannot write " + path.string());
+  file.finish();
 }
 
 // Two triangles that pass through each other, seen in orthographic projection: drawn with

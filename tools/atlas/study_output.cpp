@@ -1,9 +1,10 @@
 #include "atlas/study_output.hpp"
 
 #include <charconv>
-#include <fstream>
 #include <stdexcept>
 #include <utility>
+
+#include "common/output_file.hpp"
 
 namespace edgewise::atlas {
 namespace {
@@ -78,16 +79,16 @@ void StudyOutput::add(const std::string& chart, const std::string& series,
 
 void StudyOutput::write(const std::filesystem::path& dir) const {
   const std::filesystem::path csv_path = dir / (study_ + ".csv");
-  std::ofstream csv(csv_path);
+  tools::OutputStream csv(csv_path.string());
   csv << "chart,series,x,y\n";
   for (const Point& p : points_) {
     csv << csv_field(p.chart) << ',' << csv_field(p.series) << ',' << csv_field(p.x) << ','
         << exact_decimal(p.y) << '\n';
   }
-  if (!csv.flush()) throw std::runtime_error("cannot write " + csv_path.string());
+  csv.finish();
 
   const std::filesystem::path json_path = dir / (study_ + ".json");
-  std::ofstream json(json_path);
+  tools::OutputStream json(json_path.string());
   json << "{\n  \"study\": " << json_string(study_) << ",\n  \"title\": " << json_string(title_)
        << ",\n  \"cpu\": " << json_string(cpu_) << ",\n  \"charts\": [";
   for (std::size_t i = 0; i < charts_.size(); ++i) {
@@ -100,7 +101,7 @@ void StudyOutput::write(const std::filesystem::path& dir) const {
          << "\", \"reading\": " << json_string(c.reading) << "}";
   }
   json << "\n  ]\n}\n";
-  if (!json.flush()) throw std::runtime_error("cannot write " + json_path.string());
+  json.finish();
 }
 
 }  // namespace edgewise::atlas

@@ -1,10 +1,14 @@
 #include "common/image_file.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
+#include <vector>
+
+#include "common/output_file.hpp"
 
 namespace edgewise::tools {
 
@@ -42,11 +46,19 @@ void write_image_file(const std::string& path, const ImagePixels& image) {
   };
   const void* pixels = is_float ? static_cast<const void*>(image.floats.data())
                                 : static_cast<const void*>(image.bytes.data());
+  // Encoded in memory, then written by OutputFile: some of OpenImageIO's writers (PNG) do not
+  // report a failed write to the file, so the file's own writes are ours to check.
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
   std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
   if (!out) fail(OIIO::geterror());
+  if (!out->supports("ioproxy") || !out->set_ioproxy(&memory)) {
+    fail(std::string("OpenImageIO's ") + out->format_name() + " writer cannot encode in memory");
+  }
   if (!out->open(path, spec)) fail(out->geterror());
   if (!out->write_image(type, pixels)) fail(out->geterror());
   if (!out->close()) fail(out->geterror());
+  write_whole_file(path, std::as_bytes(std::span<const unsigned char>(encoded)));
 }
 
 }  // namespace edgewise::tools

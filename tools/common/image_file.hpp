@@ -23,7 +23,8 @@ struct ImagePixels {
 
 // Throws std::invalid_argument when the pixels do not fill width x height x channels, and
 // std::runtime_error("PATH: cannot write: reason"), on one line, when the file cannot be
-// written.
+// written: the image is encoded in memory and written through OutputFile (output_file.hpp), so
+// every failed write, flush or close is reported and no partial file is left behind.
 void write_image_file(const std::string& path, const ImagePixels& image);
 
 }  // namespace edgewise::tools

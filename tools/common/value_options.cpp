@@ -19,6 +19,14 @@ CLI::Option* add_number_option(CLI::App& app, const std::string& name, float& va
   return add_parsed_option(app, name, value, parse, description)->type_name("F");
 }
 
+CLI::Option* add_mebibytes_option(CLI::App& app, const std::string& name, std::uint64_t& bytes,
+                                  const std::string& description) {
+  const auto parse = [name](const std::string& text) {
+    return unsigned_in(name, text, 1, std::uint64_t{1} << 20) << 20;
+  };
+  return add_parsed_option(app, name, bytes, parse, description)->type_name("MB");
+}
+
 CLI::Option* add_path_option(CLI::App& app, const std::string& name,
                              std::optional<std::string>& value, const std::string& description) {
   const auto parse = [name](const std::string& text) {

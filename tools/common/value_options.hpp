@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,6 +29,9 @@ CLI::Option* add_integer_option(CLI::App& app, const std::string& name, int& val
 // A finite number (type name F).
 CLI::Option* add_number_option(CLI::App& app, const std::string& name, float& value,
                                const std::string& description);
+// A memory limit in MiB, 1 to 2^20 (1 TiB), stored in bytes (type name MB).
+CLI::Option* add_mebibytes_option(CLI::App& app, const std::string& name, std::uint64_t& bytes,
+                                  const std::string& description);
 // A path or other text that may not be empty ("NAME needs a non-empty path").
 CLI::Option* add_path_option(CLI::App& app, const std::string& name,
                              std::optional<std::string>& value, const std::string& description);

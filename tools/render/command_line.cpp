@@ -193,6 +193,11 @@ void add_texture_options(CLI::App& app, RenderCommandLine& line) {
   app.add_flag("--srgb", texture.srgb,
                "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
                "others when loaded; alpha is linear");
+  tools::add_mebibytes_option(app, "--max-texture-mb", texture.limits.max_texture_bytes,
+                              "refuse an image file whose texels would take more than MB MiB\n"
+                              "as a texture (read from its header, before any pixel; default " +
+                                  std::to_string(texture_io::kDefaultMaxTextureBytes >> 20) + ")")
+      ->group(kTextureGroup);
   tools::add_enum_option(app, "--derivatives", texture.derivatives,
                          "the sampler's screen derivatives of (s, t): differences in\n"
                          "2x2 pixel quads, as GPUs take them (default), or exact, from the\n"

@@ -17,6 +17,7 @@
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/vector.hpp"
+#include "texture_io/texture_loader.hpp"
 
 namespace edgewise::render_tool {
 
@@ -50,7 +51,8 @@ struct TextureSettings {
   TextureDerivatives derivatives = TextureDerivatives::quad;  // --derivatives
   PyramidFilter pyramid = PyramidFilter::box;                 // --pyramid
   bool srgb = false;                                          // --srgb
-  bool each_filter = false;  // --each-filter: one frame per TextureFilter
+  bool each_filter = false;       // --each-filter: one frame per TextureFilter
+  texture_io::LoadLimits limits;  // --max-texture-mb
 };
 
 // --aa and --resolve: how many samples each pixel takes and how they are filtered (resolve.hpp).

@@ -35,7 +35,7 @@ RenderTexture load_render_texture(const TextureSettings& settings) {
     return {Texture::from_rgba8(kCheckerSize, kCheckerSize, texels, encoding, build), origin.str()};
   }
   texture_io::LoadedTexture loaded =
-      texture_io::load_texture(settings.source, settings.srgb, build);
+      texture_io::load_texture(settings.source, settings.srgb, build, settings.limits);
   std::ostringstream origin;
   origin << settings.source << " (" << loaded.file_channels
          << (loaded.file_channels == 1 ? " channel " : " channels ") << loaded.pixel_type << ")";

@@ -1,10 +1,12 @@
 #include "sample/command_line.hpp"
 
 #include <span>
+#include <string>
 
 #include "common/choice_options.hpp"
 #include "common/isa_options.hpp"
 #include "common/sampler_options.hpp"
+#include "common/value_options.hpp"
 
 namespace edgewise::sample_tool {
 namespace {
@@ -66,6 +68,10 @@ void add_options(CLI::App& app, SampleSettings& settings) {
   app.add_flag("--srgb", settings.srgb,
                "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
                "others when loaded (clamped to [0, 1] first); alpha is linear");
+  tools::add_mebibytes_option(app, "--max-texture-mb", settings.limits.max_texture_bytes,
+                              "refuse an image whose texels would take more than MB MiB as a\n"
+                              "texture (read from its header, before any pixel; default " +
+                                  std::to_string(texture_io::kDefaultMaxTextureBytes >> 20) + ")");
   tools::add_isa_options(app, settings.isa,
                          "the kernel (default: the best ISA of this CPU, or EDGEWISE_ISA)",
                          "the scalar double-precision reference kernel");

@@ -11,6 +11,7 @@
 #include "edgewise/isa.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
+#include "texture_io/texture_loader.hpp"
 
 namespace edgewise::sample_tool {
 
@@ -21,6 +22,7 @@ struct SampleSettings {
   SamplerOptions sampler;    // --filter, --wrap*, --lod, --lod-bias, --max-aniso, --taps
   PyramidFilter pyramid = PyramidFilter::box;  // --pyramid
   bool srgb = false;                           // --srgb
+  texture_io::LoadLimits limits;               // --max-texture-mb
   std::optional<Isa> isa;                      // --isa or --reference; otherwise active_isa()
 };
 

@@ -1,6 +1,8 @@
 #include "sample/record_files.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <bit>
 #include <cerrno>
@@ -29,22 +31,38 @@ std::runtime_error not_whole_records(const std::string& path, std::uint64_t byte
 }  // namespace
 
 QueryReader::QueryReader(std::string path) : path_(std::move(path)) {
-  file_ = std::fopen(path_.c_str(), "rb");
-  if (file_ == nullptr) throw file_error(path_, "cannot open", errno);
+  // Opened without waiting for a writer: a pipe that nobody writes to then reads as empty
+  // instead of blocking forever.
+  const int descriptor = ::open(path_.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (descriptor < 0) throw file_error(path_, "cannot open", errno);
   struct stat status {};
-  if (::fstat(::fileno(file_), &status) != 0) {
+  if (::fstat(descriptor, &status) != 0) {
     const int error = errno;
-    std::fclose(file_);
+    ::close(descriptor);
     throw file_error(path_, "cannot open", error);
   }
   const auto refuse = [&](std::runtime_error error) {
-    std::fclose(file_);
+    ::close(descriptor);
     throw std::move(error);
   };
   if (S_ISDIR(status.st_mode)) refuse(file_error(path_, "cannot open", EISDIR));
+  // A device (/dev/zero, /dev/urandom) would never end; a pipe ends when its writer closes it.
+  if (!S_ISREG(status.st_mode) && !S_ISFIFO(status.st_mode)) {
+    refuse(std::runtime_error(path_ + ": cannot open: not a regular file or a pipe"));
+  }
+  const int flags = ::fcntl(descriptor, F_GETFL);
+  if (flags < 0 || ::fcntl(descriptor, F_SETFL, flags & ~O_NONBLOCK) != 0) {
+    refuse(file_error(path_, "cannot open", errno));
+  }
+  file_ = ::fdopen(descriptor, "rb");
+  if (file_ == nullptr) refuse(file_error(path_, "cannot open", errno));
+  const auto refuse_file = [&](std::runtime_error error) {
+    std::fclose(file_);
+    throw std::move(error);
+  };
   if (S_ISREG(status.st_mode)) {
     const auto bytes = static_cast<std::uint64_t>(status.st_size);
-    if (bytes % kQueryRecordBytes != 0) refuse(not_whole_records(path_, bytes));
+    if (bytes % kQueryRecordBytes != 0) refuse_file(not_whole_records(path_, bytes));
     count_ = bytes / kQueryRecordBytes;
   }
 }

@@ -17,8 +17,10 @@ namespace edgewise::sample_tool {
 inline constexpr std::size_t kQueryRecordBytes = 6 * sizeof(float);
 inline constexpr std::size_t kResultRecordBytes = 4 * sizeof(float);
 
-// Reads queries in order. A regular file whose size is not a whole number of records is refused
-// when opened; any other source (a pipe) when its end leaves part of a record.
+// Reads queries in order, from a regular file or a pipe (streamed: memory stays bounded). A
+// regular file whose size is not a whole number of records is refused when opened, a pipe when
+// its end leaves part of a record; anything else (a device such as /dev/zero, which would never
+// end) is refused when opened.
 class QueryReader {
  public:
   // Throws std::runtime_error("PATH: reason") when the file cannot be opened or read.
