@@ -278,15 +278,19 @@ class TextureFilters {
     const Floats clamped = clamp_lambda(lambda);
     Floats level = xsimd::floor(clamped);
     Floats f = clamped - level;
-    // Bound the work: a level up, unblended, while the ellipse's box holds over 2^22 texels.
+    // Bound the work: a level up, unblended, while the ellipse's box holds over 2 (4 M + 3)^2
+    // texels (sample.hpp; the proof that lod_bias >= -1 never gets there is at
+    // reference::ewa_box_limit). The limit is an integer below 2^18, exact in float.
+    const int m = options_.max_anisotropy;
+    const Floats box_limit(static_cast<float>(2 * (4 * m + 3) * (4 * m + 3)));
     const Floats last(static_cast<float>(texture_.mips.count - 1));
     for (std::int32_t k = 0; k < texture_.mips.count; ++k) {
       const LevelLanes<Arch> lanes = level_lanes<Arch>(texture_.mips, xsimd::to_int(level));
       const Floats eu = xsimd::sqrt(scaled_u2(axes, lanes) + Floats(1.0f));
       const Floats ev = xsimd::sqrt(scaled_v2(axes, lanes) + Floats(1.0f));
-      const auto up = (level < last) &
-                      ((Floats(2.0f) * eu + Floats(1.0f)) * (Floats(2.0f) * ev + Floats(1.0f)) >
-                       Floats(0x1p22f));
+      const auto up =
+          (level < last) &
+          ((Floats(2.0f) * eu + Floats(1.0f)) * (Floats(2.0f) * ev + Floats(1.0f)) > box_limit);
       if (!xsimd::any(up)) break;
       level = xsimd::select(up, level + Floats(1.0f), level);
       f = xsimd::select(up, Floats(0.0f), f);

@@ -250,15 +250,11 @@ EwaEllipse ewa_ellipse(const LevelAxes& x) {
   return {A, B, C, 2 * std::sqrt(det * C) / det, 2 * std::sqrt(det * A) / det};
 }
 
-// Whether the ellipse's bounding box in `level` holds at most kMaxEwaBoxTexels texel centres.
-// Its half extents are sqrt(au^2 + bu^2 + 1) and sqrt(av^2 + bv^2 + 1) (what ewa_ellipse's
-// formulas reduce to), computed here without their cancellation so that a huge footprint
-// cannot slip through as NaN.
-bool ewa_box_fits(const Texture& texture, const TextureLevel& level, const EwaFootprint& f) {
-  const LevelAxes x = level_axes(texture, level, f);
-  const double eu = std::sqrt(x.au * x.au + x.bu * x.bu + 1);
-  const double ev = std::sqrt(x.av * x.av + x.bv * x.bv + 1);
-  return (2 * eu + 1) * (2 * ev + 1) <= kMaxEwaBoxTexels;  // false for inf and NaN
+// Whether the ellipse's bounding box in `level` holds at most `limit` texels: false for a box
+// of +inf or NaN texels too.
+bool ewa_box_fits(const Texture& texture, const TextureLevel& level, const EwaFootprint& f,
+                  double limit) {
+  return ewa_box_texels(texture, level, f) <= limit;
 }
 
 }  // namespace
@@ -531,9 +527,39 @@ EwaFootprint ewa_footprint(const Texture& texture, const SamplerOptions& options
   return f;
 }
 
+double ewa_box_limit(int max_anisotropy) {
+  const double m = max_anisotropy;
+  return 2 * (4 * m + 3) * (4 * m + 3);
+}
+
+// The half extents are what ewa_ellipse's formulas reduce to, computed here without their
+// cancellation so that a huge footprint cannot slip through as NaN.
+double ewa_box_texels(const Texture& texture, const TextureLevel& level,
+                      const EwaFootprint& footprint) {
+  const LevelAxes x = level_axes(texture, level, footprint);
+  const double eu = std::sqrt(x.au * x.au + x.bu * x.bu + 1);
+  const double ev = std::sqrt(x.av * x.av + x.bv * x.bv + 1);
+  return (2 * eu + 1) * (2 * ev + 1);
+}
+
+EwaLevels ewa_levels(const Texture& texture, const SamplerOptions& options,
+                     const EwaFootprint& footprint) {
+  const std::span<const TextureLevel> levels = texture.mip_levels();
+  const double lambda_c = clamp_level_of_detail(texture, footprint.lambda);
+  EwaLevels chosen{static_cast<std::size_t>(std::floor(lambda_c)), 0};
+  chosen.blend = lambda_c - static_cast<double>(chosen.level);
+  const double limit = ewa_box_limit(options.max_anisotropy);
+  while (chosen.level + 1 < levels.size() &&
+         !ewa_box_fits(texture, levels[chosen.level], footprint, limit)) {
+    ++chosen.level;
+    chosen.blend = 0;
+  }
+  return chosen;
+}
+
 Rgba ewa_level(const Texture& texture, const TextureLevel& level, WrapMode wrap_s, WrapMode wrap_t,
                double s, double t, const EwaFootprint& footprint) {
-  if (!ewa_box_fits(texture, level, footprint)) {
+  if (!ewa_box_fits(texture, level, footprint, ewa_box_limit(kMaxAnisotropyLimit))) {
     throw std::invalid_argument("reference::ewa_level: the ellipse covers too many texels");
   }
   const EwaEllipse e = ewa_ellipse(level_axes(texture, level, footprint));
@@ -565,19 +591,13 @@ Rgba ewa(const Texture& texture, const SamplerOptions& options, const TextureQue
   if (std::hypot(footprint.major_u, footprint.major_v) == 0) {
     return bilinear(texture, levels.front(), ws, wt, s, t);  // no footprint: magnify
   }
-  const double lambda_c = clamp_level_of_detail(texture, footprint.lambda);
-  auto l0 = static_cast<std::size_t>(std::floor(lambda_c));
-  double f = lambda_c - static_cast<double>(l0);
-  // Bound the work: up a level, unblended, while the ellipse is too big for this one.
-  while (l0 + 1 < levels.size() && !ewa_box_fits(texture, levels[l0], footprint)) {
-    ++l0;
-    f = 0;
-  }
-  if (l0 + 1 == levels.size()) return coarsest_texel(texture);
-  const Rgba fine = ewa_level(texture, levels[l0], ws, wt, s, t, footprint);
-  if (f == 0) return fine;
-  Rgba out = scaled(fine, 1 - f);
-  add_scaled(out, ewa_level(texture, levels[l0 + 1], ws, wt, s, t, footprint), f);
+  const EwaLevels chosen = ewa_levels(texture, options, footprint);
+  if (chosen.level + 1 == levels.size()) return coarsest_texel(texture);
+  const Rgba fine = ewa_level(texture, levels[chosen.level], ws, wt, s, t, footprint);
+  if (chosen.blend == 0) return fine;
+  Rgba out = scaled(fine, 1 - chosen.blend);
+  add_scaled(out, ewa_level(texture, levels[chosen.level + 1], ws, wt, s, t, footprint),
+             chosen.blend);
   return out;
 }
 

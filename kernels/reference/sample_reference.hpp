@@ -27,6 +27,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -142,19 +143,47 @@ struct EwaFootprint {
 EwaFootprint ewa_footprint(const Texture& texture, const SamplerOptions& options,
                            const TextureQuery& query);
 
+// The most texels the ellipse's bounding box may hold in the level EWA reads, for max_anisotropy
+// M: 2 (4 M + 3)^2, from 98 (M = 1) to 134,162 (M = 64). It bounds a query's work to a small
+// multiple of what lod_bias 0 needs, and with lod_bias >= -1 it is never reached in a level l no
+// wider than W / 2^l and no taller than H / 2^l (every level of a W x H texture down to where its
+// shorter side reaches 1 texel: every level but the last of a square one). Proof: lambda = log2
+// |b| + lod_bias puts the clamped minor axis b below 2^(1 - lod_bias) <= 4 texels of level
+// l0 = floor(lambda) (l0 = 0 only shrinks it), and the clamp keeps the major axis a within M |b|,
+// below 4 M. The box's half extents satisfy eu^2 + ev^2 = |a|^2 + |b|^2 + 2 < 16 (M^2 + 1) + 2,
+// and (2 eu + 1)(2 ev + 1) <= (sqrt(2 (eu^2 + ev^2)) + 1)^2 < (sqrt(32 M^2 + 36) + 1)^2, which
+// is below 2 (4 M + 3)^2 for every M >= 0.7 (with 1.7% to spare at M = 64). At lod_bias 0 the
+// same steps give (sqrt(8 M^2 + 12) + 1)^2, about a quarter of the limit.
+double ewa_box_limit(int max_anisotropy);
+
+// The texels of the ellipse's bounding box in `level`, (2 eu + 1) (2 ev + 1) with the half
+// extents eu = sqrt(au^2 + bu^2 + 1) and ev = sqrt(av^2 + bv^2 + 1) (a, b the footprint's axes in
+// the level's texels); +inf or NaN for a footprint too large for doubles.
+double ewa_box_texels(const Texture& texture, const TextureLevel& level,
+                      const EwaFootprint& footprint);
+
+// The levels EWA reads: `level` and, with weight `blend`, the next one. From l0 = floor(lambda_c)
+// and blend = lambda_c - l0 (lambda_c = lambda clamped to [0, L - 1]), l0 moves one level
+// coarser, and the blend is dropped (0), while the box in l0 holds more than
+// ewa_box_limit(max_anisotropy) texels and l0 is not the last level. level = L - 1: the
+// coarsest texel alone.
+struct EwaLevels {
+  std::size_t level = 0;
+  double blend = 0;
+};
+EwaLevels ewa_levels(const Texture& texture, const SamplerOptions& options,
+                     const EwaFootprint& footprint);
+
 // The Gaussian-weighted average over the ellipse (with the unit reconstruction disk added) in
 // one level, centred at (s w - 0.5, t h - 0.5). The weights never all vanish: the ellipse
 // contains a unit disk, which holds a texel centre at Q <= 1/2. Throws std::invalid_argument
-// when the ellipse's bounding box in this level holds more than kMaxEwaBoxTexels texels.
-inline constexpr double kMaxEwaBoxTexels = 4194304.0;  // 2^22
+// when the ellipse's bounding box in this level holds more than
+// ewa_box_limit(kMaxAnisotropyLimit) texels, more than ewa() ever reads in one level.
 Rgba ewa_level(const Texture& texture, const TextureLevel& level, WrapMode wrap_s, WrapMode wrap_t,
                double s, double t, const EwaFootprint& footprint);
 
-// EWA as sample.hpp defines it, with one addition bounding the work: while the ellipse's bounding
-// box in level l0 holds more than kMaxEwaBoxTexels texels, l0 moves one level coarser and the blend
-// is dropped (f = 0). With lod_bias >= -2 (and max_anisotropy <= 64) it never applies: the box in
-// l0 is then below (2 (8 M + 1) + 1)^2 texels, about 2^20 for M = 64; a strongly negative bias
-// on a large footprint reaches it instead of a loop over billions of texels.
+// EWA as sample.hpp defines it, in the levels of ewa_levels(): without a footprint it magnifies
+// (bilinear in level 0).
 Rgba ewa(const Texture& texture, const SamplerOptions& options, const TextureQuery& query);
 
 // The 128 Gaussian weights: entry i = exp(-2 i / 127) - exp(-2), the weight at Q = i / 127, from

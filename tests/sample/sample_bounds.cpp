@@ -44,18 +44,14 @@ bool has_taps(TextureFilter filter) {
 // the normalized A, C being at most 1), and each weight by |w'| <= 2 times that; the float
 // roundings of Q (a few operations on terms below 1) move it by at most 16 u more. The mean then
 // moves by at most sum |dw| R / sum w, and sum w >= exp(-1) - exp(-2) > 0.232 (the ellipse holds
-// a texel centre at Q <= 1/2). n is at most the box of the finer level,
-// (2 sqrt(au^2 + bu^2 + 1) + 1) (2 sqrt(av^2 + bv^2 + 1) + 1) in its texels.
+// a texel centre at Q <= 1/2). n is at most the box of the finer level read (the work bound may
+// have moved it up from floor(lambda)), (2 sqrt(au^2 + bu^2 + 1) + 1) (2 sqrt(av^2 + bv^2 + 1)
+// + 1) in its texels.
 double ewa_bound(const Texture& texture, const TextureExtremes& t, const SamplerOptions& options,
                  const TextureQuery& q, double position, double rounding) {
   const reference::EwaFootprint f = reference::ewa_footprint(texture, options, q);
-  const double lambda = reference::clamp_level_of_detail(texture, f.lambda);
-  const TextureLevel& level = texture.mip_levels()[static_cast<std::size_t>(std::floor(lambda))];
-  const double su = double(level.width) / texture.width();
-  const double sv = double(level.height) / texture.height();
-  const double eu = std::sqrt(std::pow(f.major_u * su, 2) + std::pow(f.minor_u * su, 2) + 1);
-  const double ev = std::sqrt(std::pow(f.major_v * sv, 2) + std::pow(f.minor_v * sv, 2) + 1);
-  const double n = (2 * eu + 1) * (2 * ev + 1);
+  const std::size_t l0 = reference::ewa_levels(texture, options, f).level;
+  const double n = reference::ewa_box_texels(texture, texture.mip_levels()[l0], f);
   const double weight_change = 2.0 * (2.0 * 2.0 * position + 16.0 * 0x1p-24);
   return n * weight_change * t.range / 0.232 + kLodError * t.range + (2 * n) * 0x1p-24 * t.largest +
          rounding;

@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -1301,26 +1303,138 @@ TEST(SampleReference, EwaNextToTheLastLevelBlendsWithIt) {
 }
 
 TEST(SampleReference, EwaBoundsItsWorkUnderANegativeBias) {
-  // A 5000-texel isotropic footprint with lod_bias -20: lambda < 0 picks level 0, where the
-  // ellipse's box would hold about 10^8 texels. Level l's half extent is
-  // sqrt((5000 / 2^l)^2 + 1): the box (2 e + 1)^2 first fits 2^22 at l = 3 (e about 625; at
-  // l = 2, 1250 does not), which is then read alone.
+  // A 1000-texel isotropic footprint with lod_bias -20: lambda < 0 picks level 0, where the
+  // ellipse's box would hold about 4 10^6 texels. Level l's half extents are
+  // sqrt((1000 / 2^l)^2 + 1), its box (2 e + 1)^2. M = 16 allows 2 (4 16 + 3)^2 = 8978 texels:
+  // level 4 holds about 15,880 (e about 62.5), level 5 about 4036 (e about 31.3), which is then
+  // read alone. M = 64 allows 134,162: level 2 holds about 251,000, level 3 about 63,000.
   const Texture texture = random_float_texture(64, 64, 106);
   SamplerOptions options = options_for(TextureFilter::ewa, WrapMode::repeat, WrapMode::mirror);
   options.lod_bias = -20;
-  const TextureQuery q{0.3f, 0.7f, 5000.0f / 64, 0, 0, 5000.0f / 64};
+  const TextureQuery q{0.3f, 0.7f, 1000.0f / 64, 0, 0, 1000.0f / 64};
   const reference::EwaFootprint f = reference::ewa_footprint(texture, options, q);
   ASSERT_LT(f.lambda, 0);
-  EXPECT_THROW(reference::ewa_level(texture, texture.mip_levels()[2], WrapMode::repeat,
-                                    WrapMode::mirror, q.s, q.t, f),
-               std::invalid_argument);
-  expect_rgba_eq(reference::sample(texture, options, q),
-                 reference::ewa_level(texture, texture.mip_levels()[3], WrapMode::repeat,
-                                      WrapMode::mirror, q.s, q.t, f));
+  const auto level = [&](std::size_t l) {
+    return reference::ewa_level(texture, texture.mip_levels()[l], WrapMode::repeat,
+                                WrapMode::mirror, q.s, q.t, f);
+  };
+  options.max_anisotropy = 16;
+  expect_rgba_eq(reference::sample(texture, options, q), level(5));
+  options.max_anisotropy = 64;
+  expect_rgba_eq(reference::sample(texture, options, q), level(3));
+  // ewa_level() refuses a box larger than any max_anisotropy allows.
+  EXPECT_THROW(level(2), std::invalid_argument);
   // A footprint too big for every level but the last: the coarsest texel.
   options.lod_bias = -200;
   expect_rgba_eq(reference::sample(texture, options, {0.3f, 0.7f, 1e30f, 0, 0, 1e30f}),
                  reference::coarsest_texel(texture));
+}
+
+// The box of the ellipse in `level`, in its texels, from the footprint's axes (sample.hpp).
+double ewa_box(const Texture& texture, const TextureLevel& level,
+               const reference::EwaFootprint& f) {
+  const double su = double(level.width) / texture.width();
+  const double sv = double(level.height) / texture.height();
+  const double eu = std::sqrt(std::pow(f.major_u * su, 2) + std::pow(f.minor_u * su, 2) + 1);
+  const double ev = std::sqrt(std::pow(f.major_v * sv, 2) + std::pow(f.minor_v * sv, 2) + 1);
+  return (2 * eu + 1) * (2 * ev + 1);
+}
+
+// EWA's work is bounded relative to what lod_bias 0 needs (sample_reference.hpp, ewa_box_limit):
+// under lod_bias -8 and -20 large footprints of every shape read the first level from
+// floor(lambda) whose box holds at most 2 (4 M + 3)^2 texels, alone when it moved; with
+// lod_bias >= -1 the level never moves (a square texture: its levels halve both sides).
+TEST(SampleReference, EwaReadsABoxWithinTheLimitOfItsAnisotropy) {
+  const Texture texture = random_float_texture(256, 256, 107);
+  const std::span<const TextureLevel> levels = texture.mip_levels();
+  Random rng(108);
+  int moves = 0;
+  for (const int m : {1, 2, 4, 16, 64}) {
+    const double limit = 2.0 * (4.0 * m + 3) * (4.0 * m + 3);
+    for (const float bias : {-20.0f, -8.0f, -1.0f, -0.5f, 0.0f}) {
+      SamplerOptions options = options_for(TextureFilter::ewa, WrapMode::repeat, WrapMode::mirror);
+      options.max_anisotropy = m;
+      options.lod_bias = bias;
+      for (int i = 0; i < 10; ++i) {
+        // Major axis 1 to 4096 texels, minor up to 256 times shorter, any direction.
+        const double major = rng.log_uniform(1.0, 4096.0), minor = major / rng.log_uniform(1, 256);
+        const double angle = rng.uniform(0, 2 * std::numbers::pi);
+        const double c = std::cos(angle), s = std::sin(angle);
+        const TextureQuery q{
+            static_cast<float>(rng.uniform(0, 1)), static_cast<float>(rng.uniform(0, 1)),
+            static_cast<float>(major * c / 256),   static_cast<float>(major * s / 256),
+            static_cast<float>(-minor * s / 256),  static_cast<float>(minor * c / 256)};
+        const reference::EwaFootprint f = reference::ewa_footprint(texture, options, q);
+        const double lambda_c = reference::clamp_level_of_detail(texture, f.lambda);
+        auto l = static_cast<std::size_t>(std::floor(lambda_c));
+        double blend = lambda_c - static_cast<double>(l);
+        bool moved = false;
+        while (l + 1 < levels.size() && !(ewa_box(texture, levels[l], f) <= limit)) {
+          ++l;
+          blend = 0;
+          moved = true;
+        }
+        moves += moved;
+        SCOPED_TRACE("M " + std::to_string(m) + ", lod_bias " + std::to_string(bias) + ", query " +
+                     std::to_string(i));
+        if (bias >= -1.0f) {
+          EXPECT_FALSE(moved);
+        }
+        Rgba expected = reference::coarsest_texel(texture);
+        if (l + 1 < levels.size()) {
+          const auto read = [&](std::size_t k) {
+            return reference::ewa_level(texture, levels[k], WrapMode::repeat, WrapMode::mirror, q.s,
+                                        q.t, f);
+          };
+          expected = read(l);
+          if (blend > 0) {
+            const Rgba coarse = read(l + 1);
+            for (int k = 0; k < 4; ++k)
+              expected[k] = (1 - blend) * expected[k] + blend * coarse[k];
+          }
+        }
+        // The reference's operations on the same levels: (1 - blend) x + blend y, texels in
+        // [-1, 1], differs from them at most by a product's rounding where one side contracts
+        // it into a fused multiply-add (2 u).
+        expect_rgba_near(reference::sample(texture, options, q), expected, 4 * kU);
+      }
+    }
+  }
+  EXPECT_GT(moves, 50);  // of the 100 queries under lod_bias -8 and -20
+}
+
+// The limit's formula, and the proof's edge: with lod_bias -1, -1/2 or 0 a clamped footprint whose
+// minor axis is just under 2^(1 - lod_bias) texels of its level (the most floor(lambda) leaves)
+// and whose major axis is M times that, in any direction, fits the limit for every M in 1 .. 64.
+TEST(SampleReference, EwaBoxLimitHoldsWhatLodBiasMinusOneNeeds) {
+  const Texture texture = random_float_texture(64, 64, 109);
+  const std::span<const TextureLevel> levels = texture.mip_levels();
+  for (int m = 1; m <= kMaxAnisotropyLimit; ++m) {
+    EXPECT_EQ(reference::ewa_box_limit(m), 2.0 * (4 * m + 3) * (4 * m + 3));
+    for (const float bias : {-1.0f, -0.5f, 0.0f}) {
+      SamplerOptions options = options_for(TextureFilter::ewa, WrapMode::repeat, WrapMode::repeat);
+      options.max_anisotropy = m;
+      options.lod_bias = bias;
+      for (int step = 0; step < 16; ++step) {
+        // Level 2's texels are 4 of level 0's: lambda = 3 - 2^-20, just under level 3.
+        const double minor = std::exp2(3.0 - bias - 0x1p-20), major = m * minor;
+        const double angle = step * std::numbers::pi / 32;
+        const double c = std::cos(angle), s = std::sin(angle);
+        const TextureQuery q{0.5f,
+                             0.5f,
+                             static_cast<float>(major * c / 64),
+                             static_cast<float>(major * s / 64),
+                             static_cast<float>(-minor * s / 64),
+                             static_cast<float>(minor * c / 64)};
+        const reference::EwaFootprint f = reference::ewa_footprint(texture, options, q);
+        const reference::EwaLevels chosen = reference::ewa_levels(texture, options, f);
+        EXPECT_EQ(chosen.level, 2u) << "M " << m << ", lod_bias " << bias;
+        EXPECT_GT(chosen.blend, 0.99) << "M " << m << ", lod_bias " << bias;
+        EXPECT_LE(reference::ewa_box_texels(texture, levels[2], f), reference::ewa_box_limit(m))
+            << "M " << m << ", lod_bias " << bias;
+      }
+    }
+  }
 }
 
 TEST(SampleReference, EwaIsotropicIsCloseToBilinearOnARamp) {

@@ -135,7 +135,10 @@ std::vector<FilterCase> filter_cases() {
           {TextureFilter::anisotropic, 4, 16, LodFormula::max_axis, 0.25f},
           {TextureFilter::summed_area},
           {TextureFilter::ewa, 4, 4},
-          {TextureFilter::ewa, 4, 16, LodFormula::exact, -0.5f}};
+          {TextureFilter::ewa, 4, 16, LodFormula::exact, -0.5f},
+          // A strongly negative bias: the work bound picks the levels on large footprints.
+          {TextureFilter::ewa, 4, 2, LodFormula::exact, -8.0f},
+          {TextureFilter::ewa, 4, 64, LodFormula::exact, -8.0f}};
 }
 
 class SampleDifferential : public test::IsaTest {};

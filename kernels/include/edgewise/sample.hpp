@@ -37,8 +37,14 @@
 //                          Gaussian table (128 entries generated at start-up, interpolated);
 //                          level from the minor axis after clamping the eccentricity to
 //                          max_anisotropy, blended between two levels; while the ellipse's
-//                          bounding box in the finer level holds over 2^22 texels (only a
-//                          strongly negative lod_bias gets there) a coarser level is used alone
+//                          bounding box in the finer level holds over 2 (4 M + 3)^2 texels
+//                          (M = max_anisotropy: 98 to 134,162) a coarser level is used alone,
+//                          which bounds a query's work to a few times what lod_bias 0 needs
+//                          (at most (sqrt(8 M^2 + 12) + 1)^2 texels). With lod_bias >= -1 it
+//                          never applies in a level that halves both sides (every level but the
+//                          last of a square texture; kernels/reference/sample_reference.hpp,
+//                          ewa_box_limit, has the proof); a level stuck at 1 texel on its
+//                          shorter side holds more of the footprint and may reach it sooner
 //
 // Wrap modes apply per axis to every texel fetched. Results for bad input are defined: a query
 // with non-finite s or t gives (0, 0, 0, 0); derivatives that are zero magnify; huge ones select
