@@ -20,8 +20,8 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 // A vertex's class (classify_clip_vertex()) in one int32 lane. Bits 0 to 5 (kFrustumBits): the
 // view-frustum planes the vertex is beyond (near, far, left, right, bottom, top), set only for
 // a checked vertex, so that three codes share a bit exactly when clip_triangle() rejects the
-// triangle outright. kNotInside: unchecked, at w <= 0 or beyond a guard-band plane. The vertex
-// is inside every clipping plane, at w > 0, exactly when its code is 0.
+// triangle outright. kNotInside: unchecked, at w < kMinProjectedW or beyond a guard-band plane.
+// The vertex is inside every clipping plane, at w >= kMinProjectedW, exactly when its code is 0.
 inline constexpr std::int32_t kFrustumBits = 0x3f;
 inline constexpr std::int32_t kNotInside = 1 << 6;
 
@@ -91,9 +91,10 @@ class ScreenMapping {
     const Floats nearest_band_plane =
         xsimd::min(xsimd::min(x - Floats(planes_.x_min) * w, Floats(planes_.x_max) * w - x),
                    xsimd::min(y - Floats(planes_.y_min) * w, Floats(planes_.y_max) * w - y));
-    // Not inside: beyond a guard-band plane, at w <= 0, or unchecked. (Beyond a frustum plane
-    // shows in the frustum bits.)
-    const Ints not_inside = mask_lanes((nearest_band_plane < zero) | (w <= zero)) | ~checked;
+    // Not inside: beyond a guard-band plane, at w < kMinProjectedW, or unchecked. (Beyond a
+    // frustum plane shows in the frustum bits.)
+    const Ints not_inside =
+        mask_lanes((nearest_band_plane < zero) | (w < Floats(kMinProjectedW))) | ~checked;
     return (frustum & checked) | (not_inside & Ints(kNotInside));
   }
 

@@ -163,9 +163,14 @@ ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
   }
 
   // Inside the near and far planes w >= z >= 0; w = 0 only where the near plane meets the eye.
+  // A smaller positive w than float32 projects is out of range (clip.hpp, "Tiny w").
   for (const ClipVertex& v : polygon) {
     if (!(v.w > 0.0)) {
       result.status = ClipStatus::culled_degenerate;
+      return result;
+    }
+    if (v.w < static_cast<double>(kMinProjectedW)) {
+      result.status = ClipStatus::error_out_of_range;
       return result;
     }
   }

@@ -4,6 +4,7 @@
 // kernel as a one-thread call, with the bin as the clip rectangle. Every tile lies in one bin,
 // so each tile (colour, depth and depth bound) sees the same triangles in the same order as with
 // one thread: the framebuffer and every count are the same bit for bit.
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -37,19 +38,21 @@ DrawMesh triangle_range(const DrawMesh& mesh, const DrawOptions& options, std::s
   return part;
 }
 
-// The binning's counts of the screen triangles into the report (shade_bins() adds those of the
-// triangles it left to the bins' kernel calls).
-void count_screen_triangles(DrawReport& report, std::span<const RasterReport> ranges) {
+// The binning's counts of the screen triangles into the report; returns how many there are.
+// Every screen triangle not culled or an error in the binning counts as rasterized until
+// shade_bins() moves those the bins' kernel calls cull or reject (each only ever in one bin).
+std::uint64_t count_screen_triangles(DrawReport& report, std::span<const RasterReport> ranges) {
   RasterReport raster;
   for (const RasterReport& range : ranges)
     add_range_report(raster, range);
-  report.rasterized = raster.triangles;
+  report.rasterized = raster.triangles - raster.culled - raster.errors;
   report.culled += raster.culled;
   report.errors += raster.errors;
+  return raster.triangles;
 }
 
 // What one bin's kernel calls counted. Of the triangle counts, only the culled triangles and
-// errors are new: those of the triangles bin_screen_triangles() left to the bins.
+// errors are new: those of the triangles bin_screen_triangles() left to the bins, one bin each.
 struct BinCounts {
   ShadeCounts shading;
   RasterReport triangles;
@@ -88,6 +91,7 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
   for (const BinCounts& counts : bin_counts) {
     report.culled += counts.triangles.culled;
     report.errors += counts.triangles.errors;
+    report.rasterized -= counts.triangles.culled + counts.triangles.errors;
     report.fragments += counts.shading.fragments;
     report.fragments_passed += counts.shading.passed;
     report.tiles_skipped += counts.shading.tiles_skipped;
@@ -152,8 +156,8 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
     report.culled += part.culled;
     report.errors += part.errors;
   }
-  count_screen_triangles(report, range_reports);
-  if (report.rasterized == 0) return;  // as the direct path: no kernel call without triangles
+  // As the direct path: no kernel call without screen triangles.
+  if (count_screen_triangles(report, range_reports) == 0) return;
   std::optional<FlatTexture> flat_texture;
   if (options.texture) flat_texture.emplace(*options.texture->texture);
   const TextureDescription* texture = flat_texture ? &flat_texture->description() : nullptr;

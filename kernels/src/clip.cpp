@@ -7,13 +7,15 @@
 
 // Why kGuardBandMargin = 1/16 px is enough. Let G = kGuardBand - kGuardBandMargin and u = 2^-24.
 // Every output vertex satisfies x <= fl(x_max * w) exactly (clip_triangle clamps to the same
-// float product its inside test uses), with w > 0. to_screen() then rounds 1/w, x * (1/w), + 1
-// and * width/2; with the rounding of x_max itself and of x_max * w that is six roundings of
-// relative size u, all on same-signed quantities, so sx <= G (1 + u)^6 < G + 6.01 u 2^15
-// = G + 0.0118 px; the same holds for -sx, sy and -sy. Snapping to 1/256 px adds at most
-// 2^-9 = 0.002 px. Snapped vertices therefore stay within kGuardBand - 0.048 px of the centre on
-// both sides, inside [-kGuardBand, kGuardBand). And 1/16 < 0.5: on a kMaxTargetSize target the
-// last pixel center, kGuardBand - 0.5, stays inside the band.
+// float product its inside test uses), with w >= kMinProjectedW, so that 1/w and x_max * w are
+// normal floats. to_screen() then rounds 1/w, x * (1/w), + 1 and * width/2; with the rounding of
+// x_max itself and of x_max * w that is six roundings of relative size u (x * (1/w) may fall
+// below the normal range only where sx is near width/2, far from the bound), all on
+// same-signed quantities, so sx <= G (1 + u)^6 < G + 6.01 u 2^15 = G + 0.0118 px; the same
+// holds for -sx, sy and -sy. Snapping to 1/256 px adds at most 2^-9 = 0.002 px. Snapped
+// vertices therefore stay within kGuardBand - 0.048 px of the centre on both sides, inside
+// [-kGuardBand, kGuardBand). And 1/16 < 0.5: on a kMaxTargetSize target the last pixel center,
+// kGuardBand - 0.5, stays inside the band.
 static_assert(edgewise::kGuardBandMargin > 0.0118f + 0.002f && edgewise::kGuardBandMargin < 0.5f);
 
 namespace edgewise {
@@ -163,14 +165,16 @@ ClipStatus clip_polygon(ClipVertex (&buffers)[2][kMaxClipVertices], int& count, 
   return ClipStatus::clipped;
 }
 
-// Copies the polygon into result.vertices, each vertex clamped onto the planes; false, with the
-// vertices before it copied, at the first vertex whose w is not positive.
-bool store_clamped(const ClipVertex* polygon, int count, const GuardBandPlanes& planes,
-                   ClippedPolygon& result) {
+// Copies the polygon into result.vertices, each vertex clamped onto the planes, and returns
+// `kept`; at the first vertex that cannot be projected (its w not positive, or positive but below
+// kMinProjectedW), why instead, with the vertices before it copied.
+ClipStatus store_clamped(const ClipVertex* polygon, int count, const GuardBandPlanes& planes,
+                         ClipStatus kept, ClippedPolygon& result) {
   for (int i = 0; i < count; ++i) {
     ClipVertex v = polygon[i];
     Vec4& p = v.position;
-    if (!(p.w > 0.0f)) return false;
+    if (!(p.w > 0.0f)) return ClipStatus::culled_degenerate;
+    if (p.w < kMinProjectedW) return ClipStatus::error_out_of_range;
     // Crossings may overshoot a plane by a rounding; pull them back onto it so the guard-band
     // bound (see the top of this file) and 0 <= depth <= 1 hold exactly. Inside vertices, and so
     // every vertex of an unclipped triangle, are left bit for bit unchanged.
@@ -179,7 +183,7 @@ bool store_clamped(const ClipVertex* polygon, int count, const GuardBandPlanes& 
     p.z = clamp(p.z, 0.0f, p.w);
     result.vertices[i] = v;
   }
-  return true;
+  return kept;
 }
 
 }  // namespace
@@ -204,7 +208,7 @@ ClipClass classify_clip_vertex(const Vec4& p, const GuardBandPlanes& planes) {
   const unsigned code = outcode(p, planes);
   result.checked = true;
   result.outside_frustum = static_cast<std::uint16_t>(code & kFrustumBits);
-  result.inside = p.w > 0.0f && code == 0;
+  result.inside = p.w >= kMinProjectedW && code == 0;
   return result;
 }
 
@@ -244,12 +248,9 @@ ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
       return result;
     }
   }
-  if (!store_clamped(buffers[current], count, planes, result)) {
-    result.status = ClipStatus::culled_degenerate;
-    return result;
-  }
-  result.count = static_cast<std::uint8_t>(count);
-  result.status = needs_clipping ? ClipStatus::clipped : ClipStatus::inside;
+  const ClipStatus kept = needs_clipping ? ClipStatus::clipped : ClipStatus::inside;
+  result.status = store_clamped(buffers[current], count, planes, kept, result);
+  if (result.status == kept) result.count = static_cast<std::uint8_t>(count);
   return result;
 }
 

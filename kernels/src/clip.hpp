@@ -13,6 +13,12 @@
 // exactly its visible part. orthographic() keeps w = 1. A projection whose z = 0 plane passes
 // through the eye can leave a vertex at w = 0: such triangles are culled_degenerate.
 //
+// Tiny w: a vertex kept at 0 < w < kMinProjectedW is an error (error_out_of_range), not a
+// degenerate triangle: exact arithmetic projects it to a definite point, but float32 cannot
+// (1/w overflows below 2^-128, and the guard band's rounding bound assumes normal floats).
+// Small positions are no error in themselves: under a camera that keeps w normal (w = 1 for
+// orthographic()), a triangle of 1e-40 snaps to one point and is culled for its zero area.
+//
 // Crack-free: two triangles sharing an edge compute bit-identical points where that edge crosses
 // a plane (clip.cpp says how), so a mesh stays watertight after clipping.
 //
@@ -36,6 +42,12 @@ inline constexpr float kGuardBandMargin = 1.0f / 16.0f;
 // clipper overflows float32.
 inline constexpr float kMaxClipCoordinate = 0x1p64f;
 
+// The smallest w a vertex is projected from: from it on, w, 1/w and the guard band's products
+// (x_max w, ...; every bound is at least 1/2 in magnitude) are normal floats, whose roundings are
+// relative, as the guard band's bound in clip.cpp assumes. A vertex kept by the clipper with
+// 0 < w below it is an error (see "Tiny w" above).
+inline constexpr float kMinProjectedW = 0x1p-125f;
+
 // The guard band as planes through the eye: a vertex with w > 0 maps to screen coordinates in
 // [-(kGuardBand - kGuardBandMargin), kGuardBand - kGuardBandMargin] on each axis when
 // x_min w <= x <= x_max w and y_min w <= y <= y_max w. From sx = (x/w + 1) width / 2 and
@@ -55,7 +67,8 @@ enum class ClipStatus : std::uint8_t {
   culled_degenerate,   // a clipped vertex at w <= 0 (see above), or a polygon that float32 sees
                        // as a line (its vertices alternate sides of a plane): nothing to draw
   error_non_finite,    // a NaN or infinite coordinate: nothing to draw
-  error_out_of_range,  // a coordinate beyond kMaxClipCoordinate: nothing to draw
+  error_out_of_range,  // a coordinate beyond kMaxClipCoordinate, or a vertex kept at
+                       // 0 < w < kMinProjectedW: nothing to draw
 };
 
 // Near, far and the four guard-band planes: each adds at most one vertex to a convex polygon.
@@ -63,7 +76,7 @@ inline constexpr int kClipPlaneCount = 6;
 inline constexpr int kMaxClipVertices = 3 + kClipPlaneCount;
 
 struct ClipVertex {
-  Vec4 position;  // clip space; w > 0
+  Vec4 position;  // clip space; w >= kMinProjectedW
   // Weights of the original vertices 0, 1, 2: position = b0 p0 + b1 p1 + b2 p2 (up to rounding).
   // Attributes are linear in clip space, so a vertex attribute a interpolates the same way:
   // a = b0 a0 + b1 a1 + b2 a2.
@@ -86,9 +99,11 @@ ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
 // What clip_triangle() concludes from one vertex alone, so that callers classify each vertex once
 // instead of clipping every triangle. For a finite vertex within kMaxClipCoordinate (`checked`):
 // `outside_frustum` has a bit per view-frustum plane (near, far, the four sides) the vertex is
-// beyond, and `inside` says it is at w > 0 inside every plane. When all three vertices of a
-// triangle are checked, clip_triangle() returns ClipStatus::outside if their outside_frustum
-// bits share a plane, and the triangle unchanged as ClipStatus::inside if all are inside.
+// beyond, and `inside` says it is at w >= kMinProjectedW inside every plane. When all three
+// vertices of a triangle are checked, clip_triangle() returns ClipStatus::outside if their
+// outside_frustum bits share a plane, and the triangle unchanged as ClipStatus::inside if all are
+// inside. A vertex at 0 < w < kMinProjectedW is not inside: clip_triangle() decides its triangle,
+// an error unless clipping removes that vertex.
 struct ClipClass {
   std::uint16_t outside_frustum = 0;
   bool inside = false;

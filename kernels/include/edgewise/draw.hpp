@@ -116,15 +116,24 @@ struct DrawOptions {
   TaskExecutor executor;
 };
 
+// What became of the mesh's triangles. Each one is counted once: outside, culled or an error,
+// as it is or after clipping; clipped, when clipping cut it into clip_triangles pieces; or
+// rasterized. Each piece is in turn culled, an error or rasterized. So always
+//   outside + culled + errors + rasterized == triangles - clipped + clip_triangles.
+// Tiny coordinates are no error in themselves: a triangle too small to cover 1/256 px (1e-40
+// under a camera whose clip-space w stays near 1) snaps to zero area and is culled. What is an
+// error is a clip-space coordinate that float32 cannot project: non-finite, beyond 2^64, or a w
+// in (0, 2^-125) at a vertex that clipping keeps (kernels/src/clip.hpp).
 struct DrawReport {
   std::uint64_t triangles = 0;  // in the mesh
-  std::uint64_t clipped = 0;    // needed clipping (and produced this many more triangles:)
-  std::uint64_t clip_triangles = 0;
-  std::uint64_t outside = 0;           // entirely outside the view volume
-  std::uint64_t culled = 0;            // by winding or zero area after snapping
-  std::uint64_t errors = 0;            // non-finite or out-of-range positions, bad indices
-  std::uint64_t rasterized = 0;        // screen triangles handed to the rasterizer
-  std::uint64_t fragments = 0;         // covered samples
+  std::uint64_t clipped = 0;    // cut by the clipping planes into pieces, clip_triangles in all
+  std::uint64_t clip_triangles = 0;  // the pieces of the clipped triangles
+  std::uint64_t outside = 0;         // entirely outside the view volume
+  std::uint64_t culled = 0;          // by winding, zero area after snapping, or degenerate in
+                                     // clipping (ClipStatus::culled_degenerate, clip.hpp)
+  std::uint64_t errors = 0;          // non-finite or out-of-range clip-space positions, bad indices
+  std::uint64_t rasterized = 0;      // screen triangles set up and walked (covering samples or not)
+  std::uint64_t fragments = 0;       // covered samples
   std::uint64_t fragments_passed = 0;  // of those, passing the depth test (and so written)
   std::uint64_t tiles_skipped = 0;     // covered tiles rejected whole by hierarchical depth
   // Of fragments_passed, those written with one colour per triangle or per tile under
