@@ -43,6 +43,16 @@ void validate(const DrawMesh& mesh, const DrawOptions& options) {
   if (options.error_budget && !(*options.error_budget >= 0.0f)) {
     throw std::invalid_argument("draw: the error budget must be a number >= 0");
   }
+  // Checked whatever the shading, as the budget is: a value out of its domain is a mistake
+  // that would otherwise show only as black or unlit pixels once the shading changes.
+  if (!(options.ambient >= 0.0f && options.ambient <= 1.0f)) {
+    throw std::invalid_argument("draw: the ambient term must be a number in [0, 1], not " +
+                                std::to_string(options.ambient));
+  }
+  const Vec3& light = options.light_direction;
+  if (!std::isfinite(light.x) || !std::isfinite(light.y) || !std::isfinite(light.z)) {
+    throw std::invalid_argument("draw: the light direction must be finite");
+  }
   const std::size_t corners = mesh.indices.empty() ? n : mesh.indices.size();
   if (corners % 3 != 0) {
     throw std::invalid_argument("draw: " + std::to_string(corners) +

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "edgewise/draw.hpp"
@@ -108,6 +109,49 @@ TEST_P(RenderApi, ArgumentErrorsThrow) {
   EXPECT_THROW(draw(target, {positions, {}, {}, {}}, inverted), std::invalid_argument);
   EXPECT_THROW(Framebuffer(-1, 8), std::invalid_argument);
   EXPECT_THROW(Framebuffer(8, kMaxTargetSize + 1), std::invalid_argument);
+}
+
+// Float options outside their domain (draw.hpp) throw, whatever the shading, rather than draw
+// black or unlit; the values at the ends of each domain are accepted.
+TEST_P(RenderApi, FloatOptionsOutsideTheirDomainThrow) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const std::vector<Vec3> positions = {{1, 1, -0.5f}, {6, 1, -0.5f}, {1, 6, -0.5f}};
+  const std::vector<Vec3> normals(3, Vec3{0, 0, 1});
+  const DrawMesh mesh{positions, {}, normals, {}};
+  Framebuffer target(8, 8);
+  for (Shading shading : {Shading::diffuse, Shading::gouraud}) {
+    DrawOptions options = ortho_options(isa());
+    options.shading = shading;
+    for (float ambient : {nan, -nan, inf, -inf, -0.01f, 1.01f}) {
+      options.ambient = ambient;
+      EXPECT_THROW(draw(target, mesh, options), std::invalid_argument)
+          << name_of(shading) << ", ambient " << ambient;
+    }
+    for (float ambient : {0.0f, 1.0f}) {
+      options.ambient = ambient;
+      EXPECT_NO_THROW(draw(target, mesh, options)) << "ambient " << ambient;
+    }
+    options.ambient = 0.15f;
+    for (const Vec3& light : {Vec3{nan, 0, 1}, Vec3{0, inf, 1}, Vec3{0, 0, -inf}}) {
+      options.light_direction = light;
+      EXPECT_THROW(draw(target, mesh, options), std::invalid_argument)
+          << name_of(shading) << ", light " << light.x << " " << light.y << " " << light.z;
+    }
+    // No direct light, ambient only; and directions of any finite length.
+    for (const Vec3& light : {Vec3{0, 0, 0}, Vec3{1e-40f, 0, 0}, Vec3{3e38f, 3e38f, 3e38f}}) {
+      options.light_direction = light;
+      EXPECT_NO_THROW(draw(target, mesh, options)) << light.x << " " << light.y << " " << light.z;
+    }
+  }
+  DrawOptions options = ortho_options(isa());
+  options.ambient = nan;
+  try {
+    draw(target, mesh, options);
+    ADD_FAILURE() << "a NaN ambient term was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("draw: the ambient term", 0), 0u) << e.what();
+  }
 }
 
 TEST_P(RenderApi, EmptyTargetAndEmptyMeshDrawNothing) {

@@ -90,7 +90,11 @@ struct DrawOptions {
   Shading shading = Shading::gouraud;
   InterpolationMethod interpolation = InterpolationMethod::plane_equations;
   Perspective perspective = Perspective::correct;
-  Vec3 light_direction{0.0f, 0.0f, 1.0f};  // towards the light, in the normals' space
+  // Towards the light, in the normals' space; any finite vector (its length does not matter),
+  // zero for no direct light (ambient only). Throws for a NaN or infinite component.
+  Vec3 light_direction{0.0f, 0.0f, 1.0f};
+  // The light of a surface facing away from the light (Shading::diffuse): in [0, 1], so that
+  // the light goes from it to 1 as the surface turns to the light. Throws outside [0, 1] or NaN.
   float ambient = 0.15f;
   // Multiplies the shaded colour by the filtered texel at each pixel (see the top of this file).
   std::optional<DrawTexture> texture;
@@ -147,8 +151,11 @@ struct DrawReport {
 
 // Throws std::invalid_argument for inconsistent spans (attribute counts, index count not a
 // multiple of 3, diffuse without normals, a texture without uvs), a null texture, sampler
-// options sample() refuses, an inverted scissor or an unsupported ISA. Bad geometry is counted
-// in the report, never drawn. Non-finite uvs give the sampler's defined results (sample.hpp).
+// options sample() refuses, an inverted scissor, an unsupported ISA, or a float option outside
+// its domain (ambient, light_direction, error_budget; each states its own), whatever the
+// shading. The transform is not checked: the vertices it makes non-finite or out of range are
+// bad geometry, which is counted in the report (DrawReport::errors), never drawn. Non-finite
+// uvs give the sampler's defined results (sample.hpp).
 DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
 
 // Names of the values (names.hpp).
