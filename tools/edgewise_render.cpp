@@ -30,6 +30,7 @@
 #include "common/isa_options.hpp"
 #include "common/median.hpp"
 #include "common/run_tool.hpp"
+#include "common/usage_error.hpp"
 #include "edgewise/edgewise.hpp"
 #include "render/builtin_scenes.hpp"
 #include "render/camera_setup.hpp"
@@ -52,29 +53,109 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+template <class Vector>
+std::string vector_text(const Vector& v) {
+  std::ostringstream out;
+  out << '(' << v.x << ", " << v.y << ", " << v.z << ')';
+  return out.str();
+}
+
 // What is drawn: the mesh, the camera it comes with (built-in scenes), and its name.
 struct LoadedScene {
   scene::Mesh mesh;
   std::optional<scene::SceneCamera> camera;
   std::string description;
+  // The loader's warnings, one per line, printed once the frame is known to be drawn: a file
+  // that then fails gets its one line of error alone.
+  std::string warnings;
 };
 
 LoadedScene load_scene(const RenderSettings& settings) {
   if (!settings.obj_path) {
     scene::Scene built = make_builtin_scene(settings.scene_name);
-    return {std::move(built.mesh), built.camera, "scene " + settings.scene_name};
+    return {std::move(built.mesh), built.camera, "scene " + settings.scene_name, {}};
   }
   scene::MeshResult result = scene::load_obj(*settings.obj_path);
   if (!result) throw std::runtime_error(std::string(result.error()));
-  std::istringstream warnings(result.warnings());
-  for (std::string line; std::getline(warnings, line);) {
-    if (!line.empty()) std::cerr << "edgewise-render: warning: " << line << '\n';
-  }
+  std::string warnings(result.warnings());
   scene::Mesh mesh = std::move(result).mesh();
   // Diffuse shading needs normals. The loader computes smooth ones for a file that lacks some;
   // this only keeps the tool independent of that promise.
   if (mesh.normals.empty()) scene::compute_smooth_normals(mesh);
-  return {std::move(mesh), std::nullopt, "OBJ " + *settings.obj_path};
+  return {std::move(mesh), std::nullopt, "OBJ " + *settings.obj_path, std::move(warnings)};
+}
+
+// Twice the area of a triangle, from its corners in double: zero where they are collinear.
+double twice_area(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double u[3] = {double(b.x) - a.x, double(b.y) - a.y, double(b.z) - a.z};
+  const double v[3] = {double(c.x) - a.x, double(c.y) - a.y, double(c.z) - a.z};
+  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                       u[0] * v[1] - u[1] * v[0]};
+  return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+// Refuses a mesh that no camera can show anything of: every triangle of zero area (collinear
+// corners, or every vertex at one point). Some such triangles among others are common in real
+// meshes; draw() culls them (DrawReport::culled).
+void check_drawable(const scene::Mesh& mesh, const scene::Box3& bounds,
+                    const std::string& description) {
+  const std::size_t triangles = scene::triangle_count(mesh);
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const std::uint32_t* corner = &mesh.indices[3 * t];
+    if (twice_area(mesh.positions[corner[0]], mesh.positions[corner[1]],
+                   mesh.positions[corner[2]]) > 0.0) {
+      return;
+    }
+  }
+  const Vec3& p = bounds.min;
+  const bool one_point = p.x == bounds.max.x && p.y == bounds.max.y && p.z == bounds.max.z;
+  throw std::runtime_error(description + ": nothing to draw: " +
+                           (one_point
+                                ? "every vertex is at one point " + vector_text(p)
+                                : "all " + std::to_string(triangles) +
+                                      " triangles have zero area (their corners are collinear)"));
+}
+
+// The camera; a mesh it cannot frame is refused naming its file (camera_setup.hpp says which).
+ResolvedCamera frame_scene(const RenderSettings& settings, const LoadedScene& loaded,
+                           const scene::Box3& bounds) {
+  try {
+    return resolve_camera(settings.camera, loaded.camera, bounds,
+                          static_cast<float>(settings.width) / static_cast<float>(settings.height));
+  } catch (const tools::UsageError&) {
+    throw;  // a mistake on the command line, reported as such
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error(loaded.description + ": " + error.what());
+  }
+}
+
+void print_warning(std::string_view text) {
+  std::cout.flush();
+  std::cerr << "edgewise-render: warning: " << text << '\n';
+}
+
+// Triangles draw() counted as errors must not pass silently. The mesh was checked when loaded
+// (finite coordinates, indices in range), so they are out of range: the camera's transform takes
+// a coordinate beyond what float32 projects (draw.hpp). A failure when, with them, no triangle
+// was drawn at all; otherwise the loader's warnings, and a warning when some are.
+void check_frame(const DrawReport& report, const LoadedScene& loaded) {
+  const std::string count = std::to_string(report.errors) + " of " +
+                            std::to_string(report.triangles) +
+                            (report.triangles == 1 ? " triangle" : " triangles");
+  constexpr std::string_view kReason =
+      "out of range (clip-space coordinates beyond 2^64, or w below 2^-125, after the camera's "
+      "transform)";
+  if (report.errors != 0 && report.rasterized == 0) {
+    throw std::runtime_error(loaded.description + ": no triangle could be drawn: " + count + " " +
+                             (report.errors == 1 ? "is " : "are ") + std::string(kReason));
+  }
+  std::istringstream warnings(loaded.warnings);
+  for (std::string line; std::getline(warnings, line);) {
+    if (!line.empty()) print_warning(line);
+  }
+  if (report.errors != 0) {
+    print_warning(loaded.description + ": " + count + " not drawn: " + std::string(kReason));
+  }
 }
 
 // With a texture, the texels give the colour: the vertex colours are left out (opaque white).
@@ -204,15 +285,9 @@ void print_time(std::string_view label, double seconds, std::string_view note = 
   print_row(label, milliseconds(seconds), note);
 }
 
-std::string vector_text(const Vec3& v) {
-  std::ostringstream out;
-  out << '(' << v.x << ", " << v.y << ", " << v.z << ')';
-  return out.str();
-}
-
 void print_setup(const LoadedScene& loaded, const RenderSettings& settings,
                  const ResolvedCamera& camera, const TextureInUse* texture, std::string_view isas) {
-  const scene::SceneCamera& view = camera.view;
+  const WorldCamera& view = camera.view;
   const DrawOptions& d = settings.draw;
   std::cout << "edgewise-render: " << loaded.description << ", " << settings.width << "x"
             << settings.height << ", " << isas << '\n'
@@ -271,6 +346,7 @@ int render(const RenderSettings& settings, const LoadedScene& loaded, const Draw
   Framebuffer framebuffer = make_framebuffer(settings);
   const FrameTimes times = render_frames(framebuffer, mesh, options, settings.repeat);
   print_counts(times.report);
+  check_frame(times.report, loaded);
 
   // --aa: the resolved image, timed apart from the frame.
   std::vector<std::uint8_t> resolved;
@@ -383,6 +459,7 @@ int compare_isas(const RenderSettings& settings, const LoadedScene& loaded, cons
   const FrameTimes reference = render_frames(framebuffer, mesh, options, 1);
   read_every_sample(framebuffer, reference_rgba, reference_depth);
   print_counts(reference.report);
+  check_frame(reference.report, loaded);
 
   std::cout << "ISAs against the reference (frame: median of " << settings.repeat
             << " frames; the reference: 1 frame)\n";
@@ -460,6 +537,7 @@ int render_each_filter(const RenderSettings& settings, const LoadedScene& loaded
   }
   // The filter changes colours only: every frame counted the same as this last one.
   print_counts(report);
+  check_frame(report, loaded);
   return 0;
 }
 
@@ -527,6 +605,7 @@ int compare_budget(const RenderSettings& settings, const LoadedScene& loaded, co
   const InterleavedFrames frames =
       render_interleaved(exact_target, budget_target, mesh, exact, budgeted, settings.repeat);
   print_counts(frames.budget_report);
+  check_frame(frames.budget_report, loaded);
 
   const std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
   std::vector<std::uint8_t> exact_rgba(4 * pixels), budget_rgba(4 * pixels);
@@ -590,9 +669,8 @@ int run(const RenderSettings& settings) {
   if (!bounds) {
     throw std::runtime_error(loaded.description + ": no vertex with finite coordinates");
   }
-  const ResolvedCamera camera =
-      resolve_camera(settings.camera, loaded.camera, *bounds,
-                     static_cast<float>(settings.width) / static_cast<float>(settings.height));
+  check_drawable(loaded.mesh, *bounds, loaded.description);
+  const ResolvedCamera camera = frame_scene(settings, loaded, *bounds);
   std::optional<TextureInUse> texture;
   if (settings.texture) {
     if (loaded.mesh.uvs.empty()) {
