@@ -107,10 +107,11 @@ def scaled_obj(scale):
 
 class Case:
     def __init__(self, tool, args, status, message=(), stdin=None, stdout=None, absent=(),
-                 limits=None):
+                 present=(), printed=None, limits=None):
         self.tool, self.args, self.status = tool, args, status
         self.message, self.stdin, self.stdout = list(message), stdin, stdout
-        self.absent, self.address_space = list(absent), limits
+        self.absent, self.present, self.address_space = list(absent), list(present), limits
+        self.printed = printed  # a regular expression standard output must match
 
 
 CASES = {}
@@ -122,6 +123,7 @@ def case(function):
 
 
 FULL = "No space left on device"
+DREW_FRAGMENTS = r"fragments passed +[1-9]"
 NOT_REGULAR = "not a regular file"
 
 
@@ -449,14 +451,24 @@ def obj_not_a_number(d):
 
 @case
 def obj_scaled_by_1e20(d):
+    # Any mesh whose extent is a float is framed (render/camera_setup.hpp), and drawn.
     path = write(f"{d}/far.obj", scaled_obj(1e20))
-    return Case("edgewise-render", render_obj(path), 1, [path], absent=[f"{d}/o.png"])
+    return Case("edgewise-render", render_obj(path), 0, present=[f"{d}/o.png"],
+                printed=DREW_FRAGMENTS)
 
 
 @case
 def obj_scaled_by_1e_minus_40(d):
     path = write(f"{d}/tiny.obj", scaled_obj(1e-40))
-    return Case("edgewise-render", render_obj(path), 1, [path], absent=[f"{d}/o.png"])
+    return Case("edgewise-render", render_obj(path), 0, present=[f"{d}/o.png"],
+                printed=DREW_FRAGMENTS)
+
+
+@case
+def obj_extent_beyond_float(d):
+    path = write(f"{d}/vast.obj", "v -3e38 0 0\nv 3e38 0 0\nv 0 3e38 0\nf 1 2 3\n")
+    return Case("edgewise-render", render_obj(path), 1, [path, "too large to frame"],
+                absent=[f"{d}/o.png"])
 
 
 @case
@@ -521,7 +533,7 @@ def render_largest_frame_in_a_small_address_space(d):
 
 @case
 def render_ewa_with_strongly_negative_lod_bias(d):
-    # EWA's work per query is bounded whatever the bias (sample.hpp): a frame still takes seconds.
+    # EWA's work per query is bounded relative to its anisotropy, whatever the bias (sample.hpp).
     return Case("edgewise-render", ["--scene", "ground", "--size", "320x180", "--texture", "checker",
                                     "--filter", "ewa", "--lod-bias", "-8", "-o", f"{d}/ewa.png"], 0)
 
@@ -548,14 +560,14 @@ def run(name, tools, work, sanitized):
         environment["ASAN_OPTIONS"] = (environment.get("ASAN_OPTIONS", "") +
                                        ":allocator_may_return_null=1:max_allocation_size_mb=" +
                                        str((c.address_space or kMaxRss * 2) >> 20))
-    stdout = open(c.stdout, "wb") if c.stdout else subprocess.DEVNULL
+    stdout = open(c.stdout, "wb") if c.stdout else subprocess.PIPE
     stdin = open(c.stdin, "rb") if c.stdin else subprocess.DEVNULL
     command = [tool, *c.args]
     print("$", " ".join(command), (f"< {c.stdin}" if c.stdin else ""))
     process = subprocess.Popen(command, stdin=stdin, stdout=stdout, stderr=subprocess.PIPE,
                                preexec_fn=limit, cwd=folder, env=environment)
     try:
-        _, errors = process.communicate(timeout=2 * cpu)
+        printed, errors = process.communicate(timeout=2 * cpu)
     except subprocess.TimeoutExpired:
         process.kill()
         process.communicate()
@@ -573,7 +585,9 @@ def run(name, tools, work, sanitized):
     if rss > max_rss:
         failures.append(f"{rss >> 20} MiB resident, over the limit of {max_rss >> 20} MiB")
     prefix = c.tool + ": "
-    own = [line for line in errors.splitlines() if line.startswith(prefix)]
+    # Warnings ("tool: warning: ...") may accompany any run; errors are the tool's other lines.
+    own = [line for line in errors.splitlines()
+           if line.startswith(prefix) and not line.startswith(prefix + "warning: ")]
     if c.status != 0:
         if len(own) != 1:
             failures.append(f"{len(own)} lines of {c.tool} on standard error, expected 1")
@@ -583,11 +597,16 @@ def run(name, tools, work, sanitized):
                     failures.append(f"the error line does not hold '{text}'")
     elif own:
         failures.append("an error line from a run that should succeed")
+    if c.printed and not re.search(c.printed, (printed or b"").decode(errors="replace")):
+        failures.append(f"standard output does not match '{c.printed}'")
     if re.search(r"Sanitizer|runtime error:", errors):
         failures.append("a sanitizer report")
     for path in c.absent:
         if os.path.lexists(path):
             failures.append(f"{path} was left behind")
+    for path in c.present:
+        if not os.path.isfile(path) or os.path.getsize(path) == 0:
+            failures.append(f"{path} was not written")
     return failures
 
 

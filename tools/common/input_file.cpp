@@ -20,7 +20,7 @@ const char* kind_of(mode_t mode) {
 }
 
 [[noreturn]] void refuse(const std::string& path, const std::string& reason) {
-  throw std::runtime_error(path + ": cannot read: " + reason);
+  throw std::runtime_error(path + ": cannot open: " + reason);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 namespace edgewise::tools {
 
 // The size of the regular file at `path` (symbolic links followed). Throws
-// std::runtime_error("PATH: cannot read: reason") when it is missing, unreadable, a directory or
+// std::runtime_error("PATH: cannot open: reason") when it is missing, unreadable, a directory or
 // not a regular file ("not a regular file (a character device)").
 std::uint64_t require_regular_file(const std::string& path);
 
