@@ -3,8 +3,13 @@
 # package they use. Each command runs as the first command on its own minimal Debian 12 root
 # (debootstrap --variant=minbase: the essential packages and apt, nothing else), chrooted, as
 # root, in a network namespace whose only way out is a relay to the package mirror:
-#   1. tools/demo, which must exit 0 and write its images;
-#   2. tools/check with EDGEWISE_CHECK_STAGES=host,install.
+#   1. tools/check with EDGEWISE_CHECK_STAGES=host,isa-objects,install: the Release build, the
+#      whole suite and the installed package (tools/check runs these stages here rather than on
+#      the machine itself when its fresh stage runs);
+#   2. tools/demo, which must exit 0 and write its images.
+# Both roots mount the compiler cache (tools/lib/ccache.sh), so the demo's build reuses the
+# check's objects: a compile hits only when every header it reads is there with the same bytes,
+# so a package the demo did not install still fails its build.
 # A command that uses a package it did not install fails there: a program is missing, or CMake
 # stops at configure time (both commands configure with EDGEWISE_STRICT_DEPENDENCIES, so no
 # missing library silently leaves out a tool or a test).
@@ -27,7 +32,9 @@
 #                                    Both plain http: the root has no CA certificates, and apt
 #                                    checks the archive's signatures itself.
 #   EDGEWISE_FRESH_REFRESH=1         build the root again instead of using the cached tarball
-#   EDGEWISE_FRESH_CHECK_STAGES      tools/check's stages in its root (default host,install)
+#   EDGEWISE_FRESH_CHECK_STAGES      tools/check's stages in its root (default
+#                                    host,isa-objects,install)
+#   EDGEWISE_FRESH_COUNTS_FILE       where to copy that check's "passed skipped failed" counts
 #   EDGEWISE_JOBS                    passed on to both commands when set
 # shellcheck source-path=SCRIPTDIR
 set -euo pipefail
@@ -47,12 +54,12 @@ url_host_port() {
 
 # Inside the root's own mount and network namespaces (the script runs itself there through
 # unshare): loopback, relays to the host's side of each mirror relay, the kernel file systems,
-# the shared package cache, then the command, chrooted, with a clean environment.
-#   --inside ROOTFS ARCHIVES RELAYS ENV... -- COMMAND...
+# the shared package and compiler caches, then the command, chrooted, with a clean environment.
+#   --inside ROOTFS ARCHIVES CCACHE RELAYS ENV... -- COMMAND...
 # RELAYS is "address:port:socket ..."; ENV holds NAME=VALUE words for the command.
 if [[ ${1:-} == --inside ]]; then
-  rootfs=$2 archives=$3 relays=$4
-  shift 4
+  rootfs=$2 archives=$3 compiler_cache=$4 relays=$5
+  shift 5
   environment=()
   while [[ $1 != -- ]]; do
     environment+=("$1")
@@ -79,6 +86,8 @@ if [[ ${1:-} == --inside ]]; then
   mount -t tmpfs -o mode=1777 tmpfs "$rootfs/dev/shm"
   mount --bind /dev/pts "$rootfs/dev/pts"
   mount --bind "$archives" "$rootfs/var/cache/apt/archives"
+  mkdir -p "$rootfs/root/.cache/edgewise/ccache"
+  mount --bind "$compiler_cache" "$rootfs/root/.cache/edgewise/ccache"
 
   set +e
   chroot "$rootfs" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
@@ -119,7 +128,7 @@ now() { date +%s; }
 elapsed() { printf '%d min %02d s' $((($(now) - $1) / 60)) $((($(now) - $1) % 60)); }
 
 remove_tree "$work"
-mkdir -p "$work" "$cache/apt-archives"
+mkdir -p "$work" "$cache/apt-archives" "$cache/ccache"
 available_kb=$(df --output=avail -k "$work" | tail -n 1)
 if ((available_kb < 8 * 1024 * 1024)); then
   echo "error: $((available_kb / 1024)) MB free under $work; the fresh stage needs 8 GB" >&2
@@ -210,8 +219,8 @@ run_fresh() {
   echo
   echo "==== fresh: $name, the first command on a minimal Debian 12 root ($rootfs)"
   local status=0
-  unshare --mount --net --fork -- "$self" --inside "$rootfs" "$cache/apt-archives" "$relays" \
-    "$@" || status=$?
+  unshare --mount --net --fork -- "$self" --inside "$rootfs" "$cache/apt-archives" \
+    "$cache/ccache" "$relays" "$@" || status=$?
 
   installed_packages "$rootfs" >"$work/$name/after"
   local installed
@@ -244,13 +253,18 @@ jobs_env=()
 [[ -n ${EDGEWISE_JOBS:-} ]] && jobs_env=("EDGEWISE_JOBS=$EDGEWISE_JOBS")
 stage_start=$(now)
 
+counts=/root/edgewise/.check-counts
+run_fresh check "${jobs_env[@]}" \
+  "EDGEWISE_CHECK_STAGES=${EDGEWISE_FRESH_CHECK_STAGES:-host,isa-objects,install}" \
+  "EDGEWISE_CHECK_COUNTS_FILE=$counts" -- tools/check
+if [[ -n ${EDGEWISE_FRESH_COUNTS_FILE:-} ]]; then
+  cp "$work/check/root$counts" "$EDGEWISE_FRESH_COUNTS_FILE"
+fi
+remove_tree "$work/check"
+
 run_fresh demo "${jobs_env[@]}" -- tools/demo
 check_demo_images "$work/demo"
 remove_tree "$work/demo"
-
-run_fresh check "${jobs_env[@]}" \
-  "EDGEWISE_CHECK_STAGES=${EDGEWISE_FRESH_CHECK_STAGES:-host,install}" -- tools/check
-remove_tree "$work/check"
 
 remove_tree "$work"
 echo "fresh: tools/demo and tools/check passed on fresh Debian 12 roots in $(elapsed "$stage_start")"

@@ -678,7 +678,7 @@ int run(const RenderSettings& settings) {
                                " has no texture coordinates (vt lines); --texture needs them");
     }
     const auto texture_start = Clock::now();
-    texture.emplace(load_render_texture(*settings.texture), *settings.texture);
+    texture.emplace(TextureInUse{load_render_texture(*settings.texture), *settings.texture});
     texture->load_seconds = seconds_since(texture_start);
   }
   const TextureInUse* in_use = texture ? &*texture : nullptr;

@@ -25,6 +25,7 @@ EDGEWISE_TOOLS_PACKAGES=(
   openimageio-tools    # OpenImageIO's CMake package imports its tools (/usr/bin/iconvert...): no configure without
   libtinyobjloader-dev # edgewise-render reads OBJ meshes (testing/scene)
   libcli11-dev         # CLI11: every tool parses its command line with it
+  ccache               # the compiler cache the builds share (tools/lib/ccache.sh)
 )
 
 # tools/edgewise-atlas: the tools' build, the study program (timed with Google Benchmark) and
@@ -46,13 +47,14 @@ EDGEWISE_CHECK_FORMAT_PACKAGES=(
 # The host build is the tools' build plus the test suite and the benchmarks.
 EDGEWISE_CHECK_HOST_PACKAGES=(
   "${EDGEWISE_TOOLS_PACKAGES[@]}"
-  libgtest-dev     # GoogleTest: the test suite
-  libbenchmark-dev # Google Benchmark: edgewise-bench, built with everything else
-  libegl-dev       # EGL (headers, libEGL): llvmpipe for edgewise-bench's DrawPeer/ and tests/peer
-  libopengl-dev    # libOpenGL, their GL entry points (CMake's FindOpenGL needs it with EGL)
-  libgl-dev        # GL/glcorearb.h, their GL declarations
-  libgl1-mesa-dri  # Mesa's llvmpipe, which DrawPeer/ measures and tests/peer compares with
+  libgtest-dev       # GoogleTest: the test suite
+  libbenchmark-dev   # Google Benchmark: edgewise-bench, built with everything else
+  libegl-dev         # EGL (headers, libEGL): llvmpipe for edgewise-bench's DrawPeer/ and tests/peer
+  libopengl-dev      # libOpenGL, their GL entry points (CMake's FindOpenGL needs it with EGL)
+  libgl-dev          # GL/glcorearb.h, their GL declarations
+  libgl1-mesa-dri    # Mesa's llvmpipe, which DrawPeer/ measures and tests/peer compares with
   python3-matplotlib # the atlas's charts, drawn by its test from a short run
+  python3            # runs the hostile-input suite (tests/hostile_input)
 )
 # The host build, then objdump and nm (binutils, from g++) read its objects.
 EDGEWISE_CHECK_ISA_OBJECTS_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")
@@ -63,10 +65,12 @@ EDGEWISE_CHECK_AARCH64_PACKAGES=(
   googletest            # GoogleTest's sources in /usr/src/googletest, built for AArch64
   g++-aarch64-linux-gnu # the AArch64 cross compiler
   qemu-user             # runs the AArch64 test binaries (qemu-aarch64)
+  ccache                # the compiler cache the builds share (tools/lib/ccache.sh)
 )
-# The host build without the benchmarks, instrumented.
+# The sanitize and fuzz stages' one build (tools/check): clang, instrumented, with the tools.
 EDGEWISE_CHECK_SANITIZE_PACKAGES=(
-  g++                  # GCC 12 with its AddressSanitizer and UBSan runtimes
+  clang-14             # the compiler (libFuzzer, for the fuzz targets, needs clang)
+  libclang-rt-14-dev   # clang's sanitizer runtimes and libFuzzer
   cmake                # the build system
   ninja-build          # the generator
   libxsimd-dev         # the kernels' SIMD batches
@@ -76,6 +80,8 @@ EDGEWISE_CHECK_SANITIZE_PACKAGES=(
   libtinyobjloader-dev # edgewise-render and the mesh tests
   libcli11-dev         # CLI11: the tools' command lines
   libgtest-dev         # GoogleTest: the test suite
+  python3              # runs the hostile-input suite (tests/hostile_input)
+  ccache               # the compiler cache the builds share (tools/lib/ccache.sh)
 )
 # The multi-thread tests, built with ThreadSanitizer; tasks on std::thread, not oneTBB (tools/check).
 EDGEWISE_CHECK_TSAN_PACKAGES=(
@@ -84,15 +90,10 @@ EDGEWISE_CHECK_TSAN_PACKAGES=(
   ninja-build  # the generator
   libxsimd-dev # the kernels' SIMD batches
   libgtest-dev # GoogleTest: the tests
+  ccache       # the compiler cache the builds share (tools/lib/ccache.sh)
 )
-EDGEWISE_CHECK_FUZZ_PACKAGES=(
-  clang-14           # the fuzz targets' compiler (libFuzzer needs clang)
-  libclang-rt-14-dev # libFuzzer and clang's sanitizer runtimes
-  cmake              # the build system
-  ninja-build        # the generator
-  libxsimd-dev       # the kernels' SIMD batches
-  libtbb-dev         # oneTBB, the library's threads
-)
+# The sanitize stage's build, and its fuzz targets run.
+EDGEWISE_CHECK_FUZZ_PACKAGES=("${EDGEWISE_CHECK_SANITIZE_PACKAGES[@]}")
 # The host build, installed, then a consumer project built against it with the same tools.
 EDGEWISE_CHECK_INSTALL_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")
 EDGEWISE_CHECK_FRESH_PACKAGES=(

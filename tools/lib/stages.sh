@@ -60,23 +60,95 @@ edgewise_run_stage() {
 
   echo
   echo "==== [$name] $description"
-  local start status
+  local start status counts
   start=$(edgewise_now_us)
-  EDGEWISE_STAGE_COUNTS=$(mktemp)
-  export EDGEWISE_STAGE_COUNTS
+  counts=$(mktemp)
   set +e
   (
     set -e
+    export EDGEWISE_STAGE_COUNTS=$counts
     "$function"
   )
   status=$?
   set -e
+  edgewise_record_stage "$name" "$status" "$start" "$counts"
+}
 
+# A stage started in the background: its process, start time, counts file and log.
+EDGEWISE_BACKGROUND_STAGE=()
+
+# edgewise_start_stage NAME DESCRIPTION FUNCTION: starts FUNCTION in the background (if NAME is
+# selected), its output into a log, for a stage that waits on the network and the disk more than
+# it computes (the fresh stage's package downloads and installs), so that the stages run
+# meanwhile use the processors. One at a time; edgewise_finish_stage collects it.
+edgewise_start_stage() {
+  local name=$1 description=$2 function=$3
+  if ! edgewise_stage_selected "$name"; then
+    EDGEWISE_STAGE_ROWS+=("$name not-run - - - -")
+    return 0
+  fi
+  local counts log
+  counts=$(mktemp)
+  log=$(mktemp)
+  echo
+  echo "==== [$name] $description: started in the background (its output follows when it ends)"
+  (
+    set -e
+    export EDGEWISE_STAGE_COUNTS=$counts
+    "$function"
+  ) >"$log" 2>&1 &
+  EDGEWISE_BACKGROUND_STAGE=("$name" "$!" "$(edgewise_now_us)" "$counts" "$log")
+  # A check that ends early (a failed stage, an interrupt) stops it.
+  trap 'edgewise_stop_background_stage' EXIT
+}
+
+# Ends process $1 and everything it started, children first.
+edgewise_kill_tree() {
+  local child
+  for child in $(pgrep -P "$1" 2>/dev/null); do
+    edgewise_kill_tree "$child"
+  done
+  kill "$1" 2>/dev/null || true
+}
+
+edgewise_stop_background_stage() {
+  if ((${#EDGEWISE_BACKGROUND_STAGE[@]} > 0)); then
+    edgewise_kill_tree "${EDGEWISE_BACKGROUND_STAGE[1]}"
+    wait "${EDGEWISE_BACKGROUND_STAGE[1]}" 2>/dev/null || true
+    rm -f "${EDGEWISE_BACKGROUND_STAGE[3]}" "${EDGEWISE_BACKGROUND_STAGE[4]}"
+    EDGEWISE_BACKGROUND_STAGE=()
+  fi
+}
+
+# edgewise_finish_stage: waits for the stage edgewise_start_stage started, prints its output and
+# records it as edgewise_run_stage does.
+edgewise_finish_stage() {
+  ((${#EDGEWISE_BACKGROUND_STAGE[@]} > 0)) || return 0
+  local name=${EDGEWISE_BACKGROUND_STAGE[0]} pid=${EDGEWISE_BACKGROUND_STAGE[1]}
+  local start=${EDGEWISE_BACKGROUND_STAGE[2]} counts=${EDGEWISE_BACKGROUND_STAGE[3]}
+  local log=${EDGEWISE_BACKGROUND_STAGE[4]} status
+  echo
+  echo "==== [$name] waiting for it to end"
+  set +e
+  wait "$pid"
+  status=$?
+  set -e
+  EDGEWISE_BACKGROUND_STAGE=()
+  trap - EXIT
+  cat "$log"
+  rm -f "$log"
+  edgewise_record_stage "$name" "$status" "$start" "$counts"
+}
+
+# edgewise_record_stage NAME STATUS START COUNTS_FILE: adds the stage's row and counts; on
+# failure, prints the summary and the final count line, and exits with the stage's status.
+edgewise_record_stage() {
+  local name=$1 status=$2 start=$3 counts=$4
   local elapsed=$(($(edgewise_now_us) - start)) passed=0 skipped=0 failed=0 p s f
   while read -r p s f; do
     passed=$((passed + p)) skipped=$((skipped + s)) failed=$((failed + f))
-  done <"$EDGEWISE_STAGE_COUNTS"
-  rm -f "$EDGEWISE_STAGE_COUNTS"
+  done <"$counts"
+  rm -f "$counts"
   # A stage that fails outside ctest (a build error, a finding) counts as one failure.
   if ((status != 0 && failed == 0)); then
     failed=1

@@ -5,13 +5,17 @@
 # edgewise_build_tools ROOT TARGET...: configures ROOT/build (a fresh one gets only the library
 # and the tools: no tests, no benchmarks; an existing one keeps its other settings) and builds
 # the TARGETs. Strict: a missing image or mesh library stops the configure step with its name,
-# rather than leaving the tools undefined.
+# rather than leaving the tools undefined. Compiles through the compiler cache, reading only
+# (tools/lib/ccache.sh: these flags lack the check's -Werror).
 edgewise_build_tools() {
   local root=$1
   shift
-  local build_dir="$root/build"
+  local build_dir="$root/build" ccache_args
+  # shellcheck source=ccache.sh
+  source "$root/tools/lib/ccache.sh"
+  read -r -a ccache_args <<<"$(edgewise_ccache_launcher "$root" read-only)"
   local configure=(-DCMAKE_BUILD_TYPE=Release -DEDGEWISE_BUILD_TOOLS=ON
-    -DEDGEWISE_STRICT_DEPENDENCIES=ON)
+    -DEDGEWISE_STRICT_DEPENDENCIES=ON "${ccache_args[@]}")
   if [[ ! -f $build_dir/CMakeCache.txt ]]; then
     configure+=(-G Ninja -DEDGEWISE_BUILD_TESTS=OFF -DEDGEWISE_BUILD_BENCH=OFF)
   fi
