@@ -130,8 +130,12 @@ void write_ground_truth(const std::filesystem::path& path, const GroundTruth& tr
   {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
     file.write(out.bytes().data(), static_cast<std::streamsize>(out.bytes().size()));
-    if (!file.flush())
+    file.close();
+    // The rename below publishes the file: only a whole one.
+    if (!file) {
+      std::filesystem::remove(temporary);
       throw std::runtime_error("write_ground_truth: cannot write " + temporary.string());
+    }
   }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);

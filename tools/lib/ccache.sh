@@ -12,10 +12,12 @@
 # Environment: EDGEWISE_CACHE_DIR (default ${XDG_CACHE_HOME:-$HOME/.cache}/edgewise) holds it in
 # ccache/; EDGEWISE_CCACHE=0 builds without it.
 
-# edgewise_ccache_launcher ROOT [read-only]: prints the CMake arguments that compile through the
-# cache (nothing when ccache is missing or turned off) and exports its settings.
+# edgewise_ccache_launcher ROOT [read-only]: exports the cache's settings and sets
+# EDGEWISE_CCACHE_ARGS to the CMake arguments that compile through it (none when ccache is
+# missing or turned off). Not in a command substitution: its exports must reach the builds.
 edgewise_ccache_launcher() {
   local root=$1 mode=${2:-}
+  EDGEWISE_CCACHE_ARGS=()
   if [[ ${EDGEWISE_CCACHE:-1} == 0 ]] || ! command -v ccache >/dev/null; then
     return 0
   fi
@@ -28,5 +30,6 @@ edgewise_ccache_launcher() {
     unset CCACHE_READONLY
   fi
   mkdir -p "$CCACHE_DIR"
-  echo "-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
+  # shellcheck disable=SC2034 # read by the scripts that source this file
+  EDGEWISE_CCACHE_ARGS=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 }

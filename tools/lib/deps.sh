@@ -67,10 +67,9 @@ EDGEWISE_CHECK_AARCH64_PACKAGES=(
   qemu-user             # runs the AArch64 test binaries (qemu-aarch64)
   ccache                # the compiler cache the builds share (tools/lib/ccache.sh)
 )
-# The sanitize and fuzz stages' one build (tools/check): clang, instrumented, with the tools.
+# The host build without the benchmarks, instrumented.
 EDGEWISE_CHECK_SANITIZE_PACKAGES=(
-  clang-14             # the compiler (libFuzzer, for the fuzz targets, needs clang)
-  libclang-rt-14-dev   # clang's sanitizer runtimes and libFuzzer
+  g++                  # GCC 12 with its AddressSanitizer and UBSan runtimes
   cmake                # the build system
   ninja-build          # the generator
   libxsimd-dev         # the kernels' SIMD batches
@@ -92,8 +91,15 @@ EDGEWISE_CHECK_TSAN_PACKAGES=(
   libgtest-dev # GoogleTest: the tests
   ccache       # the compiler cache the builds share (tools/lib/ccache.sh)
 )
-# The sanitize stage's build, and its fuzz targets run.
-EDGEWISE_CHECK_FUZZ_PACKAGES=("${EDGEWISE_CHECK_SANITIZE_PACKAGES[@]}")
+EDGEWISE_CHECK_FUZZ_PACKAGES=(
+  clang-14           # the fuzz targets' compiler (libFuzzer needs clang)
+  libclang-rt-14-dev # libFuzzer and clang's sanitizer runtimes
+  cmake              # the build system
+  ninja-build        # the generator
+  libxsimd-dev       # the kernels' SIMD batches
+  libtbb-dev         # oneTBB, the library's threads
+  ccache             # the compiler cache the builds share (tools/lib/ccache.sh)
+)
 # The host build, installed, then a consumer project built against it with the same tools.
 EDGEWISE_CHECK_INSTALL_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")
 EDGEWISE_CHECK_FRESH_PACKAGES=(

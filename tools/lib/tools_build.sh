@@ -10,12 +10,12 @@
 edgewise_build_tools() {
   local root=$1
   shift
-  local build_dir="$root/build" ccache_args
+  local build_dir="$root/build"
   # shellcheck source=ccache.sh
   source "$root/tools/lib/ccache.sh"
-  read -r -a ccache_args <<<"$(edgewise_ccache_launcher "$root" read-only)"
+  edgewise_ccache_launcher "$root" read-only
   local configure=(-DCMAKE_BUILD_TYPE=Release -DEDGEWISE_BUILD_TOOLS=ON
-    -DEDGEWISE_STRICT_DEPENDENCIES=ON "${ccache_args[@]}")
+    -DEDGEWISE_STRICT_DEPENDENCIES=ON "${EDGEWISE_CCACHE_ARGS[@]}")
   if [[ ! -f $build_dir/CMakeCache.txt ]]; then
     configure+=(-G Ninja -DEDGEWISE_BUILD_TESTS=OFF -DEDGEWISE_BUILD_BENCH=OFF)
   fi

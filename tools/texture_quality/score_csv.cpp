@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -137,15 +138,11 @@ std::vector<ScoreRow> read_score_csv(const std::filesystem::path& path) {
   }
 }
 
-ScoreCsvFile::ScoreCsvFile(const std::filesystem::path& path)
-    : path_(path), file_(path, std::ios::binary | std::ios::trunc) {
-  if (!file_) throw file_error(path_, std::string("cannot write: ") + std::strerror(errno));
-}
+ScoreCsvFile::ScoreCsvFile(const std::filesystem::path& path) : file_(path.string()) {}
 
 void ScoreCsvFile::write(std::span<const ScoreRow> rows) {
-  const std::string text = score_csv_text(rows);
-  file_.write(text.data(), static_cast<std::streamsize>(text.size()));
-  if (!file_.flush()) throw file_error(path_, std::string("cannot write: ") + std::strerror(errno));
+  file_.write(score_csv_text(rows));
+  file_.finish();
 }
 
 }  // namespace edgewise::texture_quality

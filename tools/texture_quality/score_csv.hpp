@@ -6,12 +6,12 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "common/output_file.hpp"
 #include "texture_quality/score_row.hpp"
 
 namespace edgewise::texture_quality {
@@ -32,17 +32,17 @@ std::vector<ScoreRow> parse_score_csv(std::string_view text);
 std::vector<ScoreRow> read_score_csv(const std::filesystem::path& path);
 
 // A CSV file opened (and truncated) at construction, so that an unwritable path is found before
-// any work is done, and written once the scores are known.
+// any work is done, and written once the scores are known (common/output_file.hpp: every write
+// and the close checked; a file never finished is removed).
 class ScoreCsvFile {
  public:
   // Throws std::runtime_error("PATH: cannot write: reason").
   explicit ScoreCsvFile(const std::filesystem::path& path);
-  // Throws std::runtime_error("PATH: cannot write: reason").
+  // Writes the rows and closes the file. Throws std::runtime_error("PATH: cannot write: reason").
   void write(std::span<const ScoreRow> rows);
 
  private:
-  std::filesystem::path path_;
-  std::ofstream file_;
+  tools::OutputFile file_;
 };
 
 }  // namespace edgewise::texture_quality
