@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/isa_options.hpp"
+#include "common/output_file.hpp"
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
 #include "edgewise/isa.hpp"
@@ -98,7 +99,9 @@ int run(const SampleSettings& settings) {
   // Files first: a wrong path costs no texture build.
   QueryReader queries(settings.queries_path);
   refuse_output_over_inputs(settings);
-  ResultWriter results(settings.output_path);
+  // The results, raw little-endian float32 RGBA (kResultRecordBytes each): a file that fails is
+  // removed rather than left truncated (common/output_file.hpp).
+  tools::OutputFile results(settings.output_path);
 
   const auto load_start = Clock::now();
   const LoadedTexture loaded =
@@ -116,7 +119,7 @@ int run(const SampleSettings& settings) {
     sample(loaded.texture, {settings.sampler, isa}, std::span(chunk).first(n),
            std::span(colours).first(n));
     sampling_seconds += seconds_since(sample_start);
-    results.write(std::span(colours).first(n));
+    results.write(std::as_bytes(std::span(colours).first(n)));
     total += n;
   }
   results.finish();

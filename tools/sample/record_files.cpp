@@ -84,36 +84,4 @@ std::size_t QueryReader::read(std::span<TextureQuery> chunk) {
   return bytes / kQueryRecordBytes;
 }
 
-ResultWriter::ResultWriter(std::string path) : path_(std::move(path)) {
-  file_ = std::fopen(path_.c_str(), "wb");
-  if (file_ == nullptr) throw file_error(path_, "cannot write", errno);
-  struct stat status {};
-  regular_file_ = ::fstat(::fileno(file_), &status) == 0 && S_ISREG(status.st_mode);
-}
-
-ResultWriter::~ResultWriter() {
-  if (file_ == nullptr) return;  // finished
-  std::fclose(file_);
-  // A device or pipe (/dev/stdout) is not ours to remove.
-  if (regular_file_) std::remove(path_.c_str());
-}
-
-void ResultWriter::write(std::span<const Vec4> results) {
-  if (std::fwrite(results.data(), 1, results.size_bytes(), file_) != results.size_bytes()) {
-    throw file_error(path_, "cannot write", errno);
-  }
-}
-
-void ResultWriter::finish() {
-  const bool flushed = std::fflush(file_) == 0;
-  const int error = errno;
-  if (!flushed) throw file_error(path_, "cannot write", error);
-  std::FILE* file = std::exchange(file_, nullptr);
-  if (std::fclose(file) != 0) {
-    const int close_error = errno;
-    if (regular_file_) std::remove(path_.c_str());
-    throw file_error(path_, "cannot write", close_error);
-  }
-}
-
 }  // namespace edgewise::sample_tool

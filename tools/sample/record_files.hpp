@@ -1,6 +1,6 @@
-// edgewise-sample's binary files: the query records it reads and the RGBA results it writes, both
-// raw little-endian float32 without header, streamed a chunk at a time so that memory stays
-// bounded whatever the file size.
+// edgewise-sample's binary files: the query records it reads and the RGBA results it writes (the
+// latter through common/output_file.hpp), both raw little-endian float32 without header,
+// streamed a chunk at a time so that memory stays bounded whatever the file size.
 #pragma once
 
 #include <cstdint>
@@ -38,27 +38,6 @@ class QueryReader {
   std::string path_;
   std::FILE* file_ = nullptr;
   std::optional<std::uint64_t> count_;
-};
-
-// Writes results in order. Until finish() succeeds the file is provisional: a writer destroyed
-// earlier (the run failed) removes the regular file it created, so that no truncated result is
-// mistaken for a complete one.
-class ResultWriter {
- public:
-  // Throws std::runtime_error("PATH: cannot write: reason").
-  explicit ResultWriter(std::string path);
-  ~ResultWriter();
-  ResultWriter(const ResultWriter&) = delete;
-  ResultWriter& operator=(const ResultWriter&) = delete;
-
-  void write(std::span<const Vec4> results);
-  // Flushes and closes; throws when anything could not be written (a full disk shows here).
-  void finish();
-
- private:
-  std::string path_;
-  std::FILE* file_ = nullptr;
-  bool regular_file_ = false;
 };
 
 }  // namespace edgewise::sample_tool
