@@ -30,6 +30,34 @@ else()
   message(FATAL_ERROR "edgewise: unsupported processor ${CMAKE_SYSTEM_PROCESSOR}")
 endif()
 
+# EDGEWISE_ONLY_ISAS: a subset of EDGEWISE_ISAS to compile (empty: all of them). An ISA left out
+# is refused like another processor's. For builds that check the kernels' code for something
+# other than their results, such as the sanitizer builds: an ISA of the same vector width is the
+# same kernel source again, and one this CPU lacks is never run.
+set(EDGEWISE_ONLY_ISAS "" CACHE STRING
+    "The ISAs to compile the kernels for, a subset of ${EDGEWISE_ISAS} (empty: all)")
+if(EDGEWISE_ONLY_ISAS)
+  string(REPLACE "," ";" _only_isas "${EDGEWISE_ONLY_ISAS}")
+  foreach(isa IN LISTS _only_isas)
+    if(NOT isa IN_LIST EDGEWISE_ISAS)
+      message(FATAL_ERROR "edgewise: EDGEWISE_ONLY_ISAS names '${isa}', which is not one of "
+                          "this processor's ISAs (${EDGEWISE_ISAS})")
+    endif()
+  endforeach()
+  set(_kept_isas "")
+  foreach(isa IN LISTS EDGEWISE_ISAS)
+    if(isa IN_LIST _only_isas)
+      list(APPEND _kept_isas ${isa})
+    else()
+      list(APPEND EDGEWISE_ISAS_OF_OTHER_PROCESSORS ${isa})
+      # kernels/src/isa_list.hpp drops the ISA from the code's list.
+      add_compile_definitions(EDGEWISE_LEAVE_OUT_${isa})
+    endif()
+  endforeach()
+  set(EDGEWISE_ISAS ${_kept_isas})
+  message(STATUS "edgewise: kernels compiled for ${EDGEWISE_ISAS} only (EDGEWISE_ONLY_ISAS)")
+endif()
+
 # Kernels give the same results on every ISA only without silent FMA contraction.
 set(EDGEWISE_KERNEL_FLAGS -ffp-contract=off)
 
