@@ -16,11 +16,7 @@
 namespace edgewise::bench {
 namespace {
 
-struct AreaCase {
-  int area;           // px^2 per triangle
-  std::size_t batch;  // triangles per call
-};
-constexpr AreaCase kAreas[] = {{8, 16384}, {64, 8192}, {1000, 1024}, {200000, 16}};
+constexpr AreaCase kAreaCases[] = {{8, 16384}, {64, 8192}, {1000, 1024}, {200000, 16}};
 
 // Counts what a call delivered: tiles, and once, the pixels by kind and the summed area.
 class CountingAreaSink final : public AreaSink {
@@ -77,7 +73,7 @@ void areas(benchmark::State& state, Isa isa, AreaCase c) {
 
 void register_area_benchmarks() {
   for (Isa isa : supported_isas()) {
-    for (const AreaCase& c : kAreas) {
+    for (const AreaCase& c : kAreaCases) {
       // The reference clips every pixel of the box in double: the largest case takes seconds.
       if (isa == Isa::reference && c.area > 1000) continue;
       const std::string name =

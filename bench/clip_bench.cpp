@@ -17,7 +17,7 @@
 namespace edgewise::bench {
 namespace {
 
-constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0004;
+constexpr std::uint64_t kClipSeed = 0x5eed'ed6e'0000'0004;
 constexpr std::size_t kTriangles = 4096;
 
 enum class Crossing { none, near, guard_band };
@@ -42,7 +42,7 @@ Vec4 point(float fx, float fy, float w) {
 // (z < 0), or far outside one side (x = 40 w: beyond the guard band of a full HD target, whose
 // planes are near x = +-(1 + 2 * 8192 / 1920) w).
 std::vector<Vec4> workload(Crossing crossing) {
-  std::mt19937_64 random(kSeed);
+  std::mt19937_64 random(kClipSeed);
   std::uniform_real_distribution<float> fraction(-0.9f, 0.9f), depth(1.0f, 50.0f);
   std::vector<Vec4> vertices;
   vertices.reserve(kTriangles * 3);

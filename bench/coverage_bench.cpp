@@ -15,13 +15,9 @@
 namespace edgewise::bench {
 namespace {
 
-struct AreaCase {
-  int area;           // px^2 per triangle
-  std::size_t batch;  // triangles per count_coverage() call
-};
 // Batches take about 1-10 ms on the SIMD paths at the target rates, so per-call costs vanish
 // (the reference takes up to a few hundred ms per call).
-constexpr AreaCase kAreas[] = {{8, 65536}, {64, 32768}, {1000, 4096}, {200000, 128}};
+constexpr AreaCase kCoverageCases[] = {{8, 65536}, {64, 32768}, {1000, 4096}, {200000, 128}};
 
 // With random placement the expected number of covered samples equals the area (times the
 // samples per pixel), so a batch covers about area * batch pixels; a result far from that means the
@@ -68,7 +64,7 @@ void coverage(benchmark::State& state, Isa isa, AreaCase c, int samples) {
 
 void register_coverage_benchmarks() {
   for (Isa isa : supported_isas()) {
-    for (const AreaCase& c : kAreas) {
+    for (const AreaCase& c : kCoverageCases) {
       const std::string name =
           "Coverage/" + std::string(name_of(isa)) + "/area:" + std::to_string(c.area);
       benchmark::RegisterBenchmark(name.c_str(), coverage, isa, c, 1)
@@ -79,7 +75,7 @@ void register_coverage_benchmarks() {
   for (Isa isa : supported_isas()) {
     if (isa == Isa::reference) continue;
     for (int samples : {2, 4, 8, 16}) {
-      for (const AreaCase& c : kAreas) {
+      for (const AreaCase& c : kCoverageCases) {
         const std::string name = "Coverage/" + std::string(name_of(isa)) +
                                  "/samples:" + std::to_string(samples) +
                                  "/area:" + std::to_string(c.area);

@@ -14,6 +14,12 @@
 
 namespace edgewise::bench {
 
+// One benchmark's triangles: their area and how many go to each call.
+struct AreaCase {
+  int area;           // px^2 per triangle
+  std::size_t batch;  // triangles per call (count_coverage(), rasterize_areas())
+};
+
 inline const std::vector<Vec2>& exact_area_workload(int area, std::size_t batch) {
   constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0001;
   static std::map<std::pair<int, std::size_t>, std::vector<Vec2>> cache;

@@ -36,7 +36,7 @@
 namespace edgewise::bench {
 namespace {
 
-constexpr std::size_t kReferenceShare = 64;
+constexpr std::size_t kReferenceQueryShare = 64;
 
 enum class Stream { ground_plane, magnification };
 
@@ -61,7 +61,7 @@ const std::vector<TextureQuery>& queries(Stream stream) {
 void sample_stream(benchmark::State& state, Isa isa, TextureFilter filter, Stream stream) {
   const Texture& t = checkerboard_texture();
   std::span<const TextureQuery> q = queries(stream);
-  if (isa == Isa::reference) q = q.first(q.size() / kReferenceShare);
+  if (isa == Isa::reference) q = q.first(q.size() / kReferenceQueryShare);
   std::vector<Vec4> out(q.size());
   SampleOptions options{SamplerOptions{}, isa};
   options.sampler.filter = filter;

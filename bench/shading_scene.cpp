@@ -12,7 +12,7 @@
 namespace edgewise::bench {
 namespace {
 
-constexpr std::uint64_t kSeed = 0x5eed'ed6e'0000'0003;
+constexpr std::uint64_t kShadingSceneSeed = 0x5eed'ed6e'0000'0003;
 
 // View-space distances of the vertices, inside the cameras' near and far planes. Triangles are
 // never clipped (the benchmarks check it).
@@ -47,8 +47,8 @@ const ShadingScene& shading_scene(Camera camera, const ShadingCase& c) {
   if (!inserted) return it->second;
   ShadingScene& s = it->second;
   const std::vector<Vec2> pixels =
-      workload::exact_area_triangles(c.triangles, c.area, kWidth, kHeight, kSeed);
-  std::mt19937_64 rng(kSeed + static_cast<std::uint64_t>(c.area));
+      workload::exact_area_triangles(c.triangles, c.area, kWidth, kHeight, kShadingSceneSeed);
+  std::mt19937_64 rng(kShadingSceneSeed + static_cast<std::uint64_t>(c.area));
   std::uniform_real_distribution<double> distance(kMinDistance, kMaxDistance);
   std::uniform_real_distribution<float> channel(0.0f, 1.0f);
   s.positions.reserve(pixels.size());

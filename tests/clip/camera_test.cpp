@@ -7,18 +7,17 @@
 #include <numbers>
 
 #include "edgewise/camera.hpp"
+#include "float_roundoff.hpp"
 
 namespace edgewise::test {
 namespace {
-
-constexpr double kUnit = 0x1p-24;  // float32's unit roundoff
 
 // Each clip coordinate is a sum of four products of matrix entries (each the float nearest an
 // exact value, relative error u) and inputs: the entries add u, each product u, the three sums
 // 3u, all relative to the sum of the terms' magnitudes, and the camera's own exact value carries
 // the error of its float inputs (fovy, near, far: about 2u). 8u of `magnitude` covers it.
 void expect_close(double actual, double exact, double magnitude, const char* what) {
-  EXPECT_NEAR(actual, exact, 8.0 * kUnit * magnitude) << what;
+  EXPECT_NEAR(actual, exact, 8.0 * kFloatUnitRoundoff * magnitude) << what;
 }
 
 void expect_clip(const Vec4& c, double x, double y, double z, double w, double magnitude) {
@@ -132,9 +131,9 @@ TEST(Viewport, PipelinePutsAWorldPointOnItsPixel) {
   const ScreenVertex v = to_screen(transform(projection * view, Vec3{10, 5, 0}), viewport);
   // About twenty roundings (matrix product, transform, divide, mapping), each relative u of
   // values below 2 in NDC: 32u of NDC, times half the viewport in pixels.
-  EXPECT_NEAR(v.x, 150.0, 32 * kUnit * 100);  // NDC x = 10 / (10 * 2) = 0.5
-  EXPECT_NEAR(v.y, 25.0, 32 * kUnit * 50);
-  EXPECT_NEAR(v.inv_w, 0.1, 32 * kUnit * 0.1);
+  EXPECT_NEAR(v.x, 150.0, 32 * kFloatUnitRoundoff * 100);  // NDC x = 10 / (10 * 2) = 0.5
+  EXPECT_NEAR(v.y, 25.0, 32 * kFloatUnitRoundoff * 50);
+  EXPECT_NEAR(v.inv_w, 0.1, 32 * kFloatUnitRoundoff * 0.1);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "edgewise/camera.hpp"
+#include "float_roundoff.hpp"
 #include "src/clip.hpp"
 #include "random.hpp"
 #include "reference/clip_reference.hpp"
@@ -22,8 +23,7 @@ namespace edgewise::test {
 namespace {
 
 constexpr int kTriangles = 40000;
-constexpr std::uint64_t kSeed = 0xc11b'0dd5'2024ull;
-constexpr double kUnit = 0x1p-24;  // float32's unit roundoff u
+constexpr std::uint64_t kDifferentialSeed = 0xc11b'0dd5'2024ull;
 
 // Error analysis of the float32 clipper (clip.cpp), per clipping plane p with the plane scale
 // S_p = max over the three input vertices of the summed |coefficient * coordinate| (the size of
@@ -175,7 +175,7 @@ bool compare(const Case& c, Tally& tally) {
   // scale; nearer than that, either side is right.
   // At a tie the two may build different, equally right polygons: a disagreement is excused
   // (and counted) when a decision came within the residual tolerance of a plane.
-  const bool tie = exact.closest_decision <= kResidualGrowth * kUnit;
+  const bool tie = exact.closest_decision <= kResidualGrowth * kFloatUnitRoundoff;
   const auto excused = [&] {
     if (tie) ++tally.ties;
     return tie;
@@ -193,7 +193,7 @@ bool compare(const Case& c, Tally& tally) {
 
   std::array<Line, 3 + kClipPlaneCount> lines;
   for (int k = 0; k < 3; ++k) {
-    lines[k] = {{0, 0, 0}, kResidualGrowth * kUnit};
+    lines[k] = {{0, 0, 0}, kResidualGrowth * kFloatUnitRoundoff};
     lines[k].g[k] = 1;
   }
   double largest_scale = 0;
@@ -201,7 +201,7 @@ bool compare(const Case& c, Tally& tally) {
     const double scale = reference::plane_scale(p, c.p[0], c.p[1], c.p[2], c.viewport);
     largest_scale = std::max(largest_scale, scale);
     Line& line = lines[3 + p];
-    line.tolerance = kResidualGrowth * kUnit * scale;
+    line.tolerance = kResidualGrowth * kFloatUnitRoundoff * scale;
     for (int i = 0; i < 3; ++i)
       line.g[i] = reference::plane_distance(p, c.p[i].x, c.p[i].y, c.p[i].z, c.p[i].w, c.viewport);
   }
@@ -214,7 +214,7 @@ bool compare(const Case& c, Tally& tally) {
     int on[3 + kClipPlaneCount];
     int on_count = 0;
     for (std::size_t l = 0; l < lines.size(); ++l) {
-      const double size = l < 3 ? 1.0 : lines[l].tolerance / (kResidualGrowth * kUnit);
+      const double size = l < 3 ? 1.0 : lines[l].tolerance / (kResidualGrowth * kFloatUnitRoundoff);
       if (std::fabs(lines[l].value(b)) <= 1e-12 * size) on[on_count++] = static_cast<int>(l);
     }
     if (on_count < 2) {
@@ -262,8 +262,8 @@ bool compare(const Case& c, Tally& tally) {
         coordinate_bound += bound * value;
         largest = std::max(largest, value);
       }
-      coordinate_bound +=
-          72 * kUnit * largest + (axis < 3 ? kResidualGrowth * kUnit * largest_scale : 0);
+      coordinate_bound += 72 * kFloatUnitRoundoff * largest +
+                          (axis < 3 ? kResidualGrowth * kFloatUnitRoundoff * largest_scale : 0);
       error_p_ratio = std::max(error_p_ratio, std::fabs(fp[axis] - rp[axis]) / coordinate_bound);
     }
     const double ratio = std::max(error_b / bound, error_p_ratio);
@@ -281,14 +281,14 @@ bool compare(const Case& c, Tally& tally) {
 }
 
 TEST(ClipDifferential, MatchesTheDoubleReference) {
-  Random random(kSeed);
+  Random random(kDifferentialSeed);
   Tally tally;
   std::uint64_t per_kind_clipped[kKinds] = {}, per_kind_ties[kKinds] = {};
   for (int n = 0; n < kTriangles; ++n) {
     const Case c = random_case(random, n % kKinds);
     const std::uint64_t clipped_before = tally.clipped, ties_before = tally.ties;
     if (!compare(c, tally)) {
-      ADD_FAILURE() << "triangle " << n << " of seed " << kSeed;
+      ADD_FAILURE() << "triangle " << n << " of seed " << kDifferentialSeed;
       return;
     }
     per_kind_clipped[c.kind] += tally.clipped - clipped_before;

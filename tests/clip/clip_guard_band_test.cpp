@@ -20,7 +20,7 @@ namespace edgewise::test {
 namespace {
 
 constexpr int kTrianglesPerViewport = 1000;
-constexpr std::uint64_t kSeed = 0x9a4d'b4d5'11a7ull;
+constexpr std::uint64_t kGuardBandSeed = 0x9a4d'b4d5'11a7ull;
 
 // clip.cpp's bound: |screen coordinate| <= G + 0.0118 px with G = kGuardBand - kGuardBandMargin.
 constexpr double kScreenBound = kGuardBand - double{kGuardBandMargin} + 0.0118;
@@ -50,7 +50,7 @@ TEST_P(ClipGuardBand, ClippedTrianglesStayInsideTheGuardBandAndViewport) {
        PixelRect{kMaxTargetSize - 40, kMaxTargetSize - 40, kMaxTargetSize, kMaxTargetSize}},
       {{kMaxTargetSize, kMaxTargetSize}, PixelRect{0, 0, 40, 40}},
   };
-  Random random(kSeed);
+  Random random(kGuardBandSeed);
   double largest = 0;
   std::uint64_t drawn = 0, pixels = 0;
   for (const TargetSetup& setup : setups) {

@@ -21,13 +21,12 @@
 
 #include "clipped_mesh.hpp"
 #include "coverage_result.hpp"
+#include "float_roundoff.hpp"
 #include "isa_params.hpp"
 #include "reference/clip_reference.hpp"
 
 namespace edgewise::test {
 namespace {
-
-constexpr double kUnit = 0x1p-24;
 
 struct Scene {
   const char* name;
@@ -183,8 +182,8 @@ TEST_P(ClipWatertight, GridAcrossClipPlanes) {
     // coordinate M (grid vertex rounding u, the transform 7u, one plane crossing 16u, the lerp
     // of the near edge's neighbours: rounded up), which the divide by w >= near turns into
     // 2 * 32u M / near in NDC (x and w both err), and the viewport into pixels.
-    const double margin = 0x1p-8 + std::max(vp.width, vp.height) / 2.0 * 2 * 32 * kUnit *
-                                       built.largest_coordinate / kNear;
+    const double margin = 0x1p-8 + std::max(vp.width, vp.height) / 2.0 * 2 * 32 *
+                                       kFloatUnitRoundoff * built.largest_coordinate / kNear;
     const auto outline = visible_region(built, vp);
     std::uint64_t inside = 0, boundary = 0;
     for (int y = 0; y < vp.height; ++y) {

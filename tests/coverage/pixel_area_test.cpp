@@ -110,7 +110,7 @@ TEST(PixelArea, RectanglesCutIntoTriangles) {
 }
 
 // A random triangle, from slivers to wide ones, anywhere in the guard band.
-SnappedTriangle random_triangle(Random& random) {
+SnappedTriangle random_guard_band_triangle(Random& random) {
   const std::int64_t reach = random.chance(0.3) ? (std::int64_t{1} << 23) - 8192 : 1 << 14;
   const std::int64_t x = random.integer(-reach, reach), y = random.integer(-reach, reach);
   const double size = random.log_uniform(1.0, 16384.0);  // fixed-point units: up to 64 px
@@ -131,7 +131,7 @@ bool has_area(const SnappedTriangle& t) {
 TEST(PixelArea, PixelsAddUpToTheTriangle) {
   Random random(0xa7ea'0002);
   for (int trial = 0; trial < 2000; ++trial) {
-    const SnappedTriangle t = random_triangle(random);
+    const SnappedTriangle t = random_guard_band_triangle(random);
     if (!has_area(t)) continue;
     const PixelRect box = box_of(t);
     double sum = 0.0;
@@ -157,7 +157,7 @@ TEST(PixelArea, PartsOfATriangleAddUpPerPixel) {
   Random random(0xa7ea'0003);
   int checked = 0;
   for (int trial = 0; trial < 3000 && checked < 1000; ++trial) {
-    const SnappedTriangle t = random_triangle(random);
+    const SnappedTriangle t = random_guard_band_triangle(random);
     if (!has_area(t)) continue;
     // A point inside: a rounded convex combination, kept only if strictly inside.
     const double a = random.uniform(0.05, 0.9), b = random.uniform(0.05, 0.95 - a);
@@ -194,7 +194,7 @@ TEST(PixelArea, PartsOfATriangleAddUpPerPixel) {
 TEST(PixelArea, AgreesWithTheSampleAtThePixelCentre) {
   Random random(0xa7ea'0004);
   for (int trial = 0; trial < 2000; ++trial) {
-    const SnappedTriangle t = random_triangle(random);
+    const SnappedTriangle t = random_guard_band_triangle(random);
     if (!has_area(t)) continue;
     const PixelRect box = box_of(t);
     for (std::int32_t py = box.y0; py < box.y1; ++py) {

@@ -16,7 +16,7 @@
 #include "isa_params.hpp"
 #include "random.hpp"
 
-namespace edgewise::test {
+namespace edgewise::test::small_triangles {
 namespace {
 
 using SmallTriangles = IsaTest;
@@ -120,4 +120,4 @@ TEST_P(SmallTriangles, ColoursWithinTheDerivedBound) {
 EDGEWISE_INSTANTIATE_PER_ISA(SmallTriangles, every_isa());
 
 }  // namespace
-}  // namespace edgewise::test
+}  // namespace edgewise::test::small_triangles

@@ -23,7 +23,7 @@
 #include "draw/textured_bounds.hpp"
 #include "src/texture_planes.hpp"
 
-namespace edgewise::test {
+namespace edgewise::test::textured_draw {
 namespace {
 
 constexpr std::int32_t kWidth = 96, kHeight = 72;
@@ -178,4 +178,4 @@ TEST_P(TexturedRender, ShadedColoursTimesTheTextureWithinTheBound) {
 EDGEWISE_INSTANTIATE_PER_ISA(TexturedRender, every_isa());
 
 }  // namespace
-}  // namespace edgewise::test
+}  // namespace edgewise::test::textured_draw

@@ -19,7 +19,7 @@
 #include "isa_params.hpp"
 #include "random.hpp"
 
-namespace edgewise::test {
+namespace edgewise::test::draw_threads {
 namespace {
 
 constexpr std::int32_t kWidth = 331, kHeight = 203;  // bins of several sizes, partial tiles
@@ -369,4 +369,4 @@ TEST(ThreadCount, TooManyThreadsThrow) {
 }
 
 }  // namespace
-}  // namespace edgewise::test
+}  // namespace edgewise::test::draw_threads

@@ -10,11 +10,11 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "draw/bitwise_same.hpp"
 #include "edgewise/camera.hpp"
 #include "edgewise/draw.hpp"
 #include "isa_params.hpp"
@@ -23,7 +23,7 @@
 #include "src/kernel_table.hpp"
 #include "src/vertex_stage.hpp"
 
-namespace edgewise::test {
+namespace edgewise::test::vertex_stage {
 namespace {
 
 // A mesh and how the stage sees it.
@@ -162,20 +162,6 @@ std::size_t random_vertex_count(Random& random) {
                             : static_cast<std::size_t>(random.integer(41, 700));
 }
 
-bool same(float a, float b) {
-  if (std::isnan(a) && std::isnan(b)) return true;
-  return std::memcmp(&a, &b, sizeof(float)) == 0;
-}
-bool same(const Vec2& a, const Vec2& b) {
-  return same(a.x, b.x) && same(a.y, b.y);
-}
-bool same(const Vec3& a, const Vec3& b) {
-  return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
-}
-bool same(const Vec4& a, const Vec4& b) {
-  return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z) && same(a.w, b.w);
-}
-
 template <class Array>
 std::string first_difference(const Array& a, const Array& b, const char* name) {
   if (a.size() != b.size()) {
@@ -270,7 +256,7 @@ struct Corner {
   Vec2 uv;
 };
 
-bool same(const Corner& a, const Corner& b) {
+bool same_corner(const Corner& a, const Corner& b) {
   return same(a.position, b.position) && same(a.depth, b.depth) && same(a.w, b.w) &&
          same(a.color, b.color) && same(a.normal, b.normal) && same(a.uv, b.uv);
 }
@@ -373,7 +359,7 @@ TEST_P(VertexStage, DrawsWhatClippingEachTriangleAloneDraws) {
                           s.colors[v],
                           c.diffuse ? s.normals[v] : Vec3{0, 0, 0},
                           c.textured ? s.uvs[v] : Vec2{0, 0}};
-      ASSERT_TRUE(same(corner, expected[k])) << "round " << round << ", corner " << k;
+      ASSERT_TRUE(same_corner(corner, expected[k])) << "round " << round << ", corner " << k;
     }
   }
 }
@@ -381,4 +367,4 @@ TEST_P(VertexStage, DrawsWhatClippingEachTriangleAloneDraws) {
 EDGEWISE_INSTANTIATE_PER_ISA(VertexStage, every_isa());
 
 }  // namespace
-}  // namespace edgewise::test
+}  // namespace edgewise::test::vertex_stage

@@ -3,12 +3,11 @@
 // reference, which the bit-exact depth results of draw() rely on.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <vector>
 
+#include "draw/bitwise_same.hpp"
 #include "edgewise/camera.hpp"
 #include "isa_params.hpp"
 #include "random.hpp"
@@ -33,11 +32,6 @@ float random_value(Random& random) {
     default:
       return static_cast<float>(random.uniform(-100.0, 100.0));
   }
-}
-
-bool same(float a, float b) {
-  if (std::isnan(a) && std::isnan(b)) return true;
-  return std::memcmp(&a, &b, sizeof(float)) == 0;
 }
 
 TEST_P(VertexTransform, EqualsTheScalarTransformBitForBit) {

@@ -18,7 +18,7 @@
 namespace edgewise::test {
 namespace {
 
-constexpr int kTrianglesPerSource = 150;
+constexpr int kFastTrianglesPerSource = 150;
 constexpr int kTile = 8;
 
 class FastInterpolationTest : public IsaTest {
@@ -144,7 +144,7 @@ TEST_P(FastInterpolationTest, WithinDerivedBoundOfReference) {
   std::vector<double> relative_bounds;
   for (const InterpolationTriangleSource& source : interpolation_triangle_sources()) {
     Checked checked;
-    for (int n = 0; n < kTrianglesPerSource; ++n) {
+    for (int n = 0; n < kFastTrianglesPerSource; ++n) {
       ScreenTriangle t = source.make(random);
       assign_depths(random, random.log_uniform(1.0, 1000.0), t);
       double px, py;

@@ -16,7 +16,7 @@
 namespace edgewise::test {
 namespace {
 
-constexpr int kTrianglesPerSource = 400;
+constexpr int kReferenceTrianglesPerSource = 400;
 constexpr int kSamplesPerTriangle = 16;
 
 TEST(InterpolationReference, EquivalentMethodsAgreeWithinDerivedBound) {
@@ -24,7 +24,7 @@ TEST(InterpolationReference, EquivalentMethodsAgreeWithinDerivedBound) {
   std::vector<double> relative_bounds;  // bound / (exact magnitude + 1), to show it is informative
   for (const InterpolationTriangleSource& source : interpolation_triangle_sources()) {
     double worst_difference = 0.0, worst_bound = 0.0;
-    for (int n = 0; n < kTrianglesPerSource; ++n) {
+    for (int n = 0; n < kReferenceTrianglesPerSource; ++n) {
       const ScreenTriangle t = source.make(random);
       for (int s = 0; s < kSamplesPerTriangle; ++s) {
         double px, py;

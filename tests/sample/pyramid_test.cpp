@@ -13,6 +13,7 @@
 
 #include "edgewise/texture.hpp"
 #include "random.hpp"
+#include "sample/random_codes.hpp"
 
 namespace edgewise::test {
 namespace {
@@ -28,15 +29,6 @@ std::vector<float> random_floats(std::int32_t width, std::int32_t height, double
   std::vector<float> texels(static_cast<std::size_t>(width) * height * 4);
   for (float& v : texels)
     v = static_cast<float>(random.uniform(lo, hi));
-  return texels;
-}
-
-std::vector<std::uint8_t> random_codes(std::int32_t width, std::int32_t height,
-                                       std::uint64_t seed) {
-  Random random(seed);
-  std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 4);
-  for (std::uint8_t& v : texels)
-    v = static_cast<std::uint8_t>(random.integer(0, 255));
   return texels;
 }
 

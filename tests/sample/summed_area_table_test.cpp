@@ -14,6 +14,7 @@
 
 #include "edgewise/texture.hpp"
 #include "random.hpp"
+#include "sample/random_codes.hpp"
 
 namespace edgewise::test {
 namespace {
@@ -31,15 +32,6 @@ constexpr bool kSanitized = false;
 #endif
 
 using Size = std::pair<std::int32_t, std::int32_t>;
-
-std::vector<std::uint8_t> random_codes(std::int32_t width, std::int32_t height,
-                                       std::uint64_t seed) {
-  Random random(seed);
-  std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * height * 4);
-  for (std::uint8_t& v : texels)
-    v = static_cast<std::uint8_t>(random.integer(0, 255));
-  return texels;
-}
 
 const TextureBuild kWithTable{PyramidFilter::box, false, true};
 

@@ -1,5 +1,5 @@
 // Geometry the scene tests measure meshes with, in double precision: vector arithmetic, welding
-// vertices by position, and the surface's edges.
+// vertices by position, the surface's edges, and how far from unit length a normal may be.
 #pragma once
 
 #include <algorithm>
@@ -13,6 +13,12 @@
 #include "scene/mesh.hpp"
 
 namespace edgewise::scene::test {
+
+// How far from 1 the length of a normal may be: normals are unit vectors in double precision
+// whose components are each rounded once to float32 (relative error at most u = 2^-24), so their
+// length is within u of 1; the double-precision arithmetic they come from (sums, sin and cos)
+// adds ~1e-15.
+inline constexpr double kUnitLengthTolerance = 0x1.0p-24 + 1e-12;
 
 struct Vec3d {
   double x, y, z;

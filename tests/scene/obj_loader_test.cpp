@@ -15,9 +15,6 @@
 namespace edgewise::scene::test {
 namespace {
 
-// Normals normalized in double and rounded to float32 per component: unit within 2^-24.
-constexpr double kUnitLengthTolerance = 0x1.0p-24 + 1e-12;
-
 // The mesh of a result that must be a valid one (it lives as long as `result`).
 const Mesh& expect_loaded(const MeshResult& result) {
   EXPECT_TRUE(result.ok()) << result.error();

@@ -11,11 +11,6 @@
 namespace edgewise::scene::test {
 namespace {
 
-// Normals are unit vectors in double precision whose components are each rounded once to float32
-// (relative error at most u = 2^-24), so their length is within u of 1; the double-precision sin
-// and cos they come from add ~1e-15.
-constexpr double kUnitLengthTolerance = 0x1.0p-24 + 1e-12;
-
 void expect_finite_and_valid(const Mesh& mesh) {
   const auto problem = validate(mesh);
   EXPECT_FALSE(problem.has_value()) << *problem;

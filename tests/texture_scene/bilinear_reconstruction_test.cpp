@@ -6,13 +6,12 @@
 
 #include "random.hpp"
 #include "texture_scene/bilinear_reconstruction.hpp"
+#include "texture_scene/wrap_modes.hpp"
 
 namespace edgewise::texture_scene {
 namespace {
 
 using edgewise::test::Random;
-
-constexpr WrapMode kWrapModes[] = {WrapMode::repeat, WrapMode::clamp_to_edge, WrapMode::mirror};
 
 TEST(WrapTexelIndex, HandCases) {
   // n = 3: ... -4 -3 -2 -1 | 0 1 2 | 3 4 5 6 ...

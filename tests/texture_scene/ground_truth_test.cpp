@@ -12,11 +12,11 @@
 #include "texture_scene/builtin_views.hpp"
 #include "texture_scene/ground_truth.hpp"
 #include "texture_scene/procedural_textures.hpp"
+#include "texture_scene/wrap_modes.hpp"
 
 namespace edgewise::texture_scene {
 namespace {
 
-constexpr WrapMode kWrapModes[] = {WrapMode::repeat, WrapMode::clamp_to_edge, WrapMode::mirror};
 constexpr double kFloatRounding = 0x1.0p-24;  // relative, storing a result as float
 
 TEST(GroundTruth, ConstantTextureGivesExactlyTheConstant) {

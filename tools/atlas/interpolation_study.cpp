@@ -17,7 +17,7 @@ namespace {
 
 // The target: a power of two, so that a screen position on the 1/256 grid and a clip w that is
 // a power of two pass through clip space and the viewport mapping without rounding.
-constexpr int kSize = 1024;
+constexpr int kTargetSize = 1024;
 
 // Triangles given on screen (pixels) with a clip w and an attribute (red, green, blue in [0, 1])
 // per vertex.
@@ -33,7 +33,7 @@ std::vector<Vec3> positions_of(const ScreenTriangles& triangles) {
   std::vector<Vec3> positions;
   for (std::size_t i = 0; i < triangles.screen.size(); ++i) {
     positions.push_back(probes::xyw_position(triangles.screen[i].x, triangles.screen[i].y,
-                                             triangles.w[i], kSize, kSize));
+                                             triangles.w[i], kTargetSize, kTargetSize));
   }
   return positions;
 }
@@ -52,8 +52,8 @@ struct Error {
 Error measure_error(const ScreenTriangles& triangles, const DrawOptions& options) {
   Error error;
   const std::vector<Vec3> positions = positions_of(triangles);
-  Framebuffer target(kSize, kSize);
-  std::vector<std::uint8_t> rgba(std::size_t{kSize} * kSize * 4);
+  Framebuffer target(kTargetSize, kTargetSize);
+  std::vector<std::uint8_t> rgba(std::size_t{kTargetSize} * kTargetSize * 4);
   // One triangle at a time: the study's triangles may overlap.
   for (std::size_t t = 0; t < triangles.count(); ++t) {
     target.clear({0.0f, 0.0f, 0.0f, 0.0f}, 1.0f);
@@ -67,13 +67,13 @@ Error measure_error(const ScreenTriangles& triangles, const DrawOptions& options
                         (double(v[1].y) - v[0].y) * (double(v[2].x) - v[0].x);
     const int x0 = std::max(0, static_cast<int>(std::floor(std::min({v[0].x, v[1].x, v[2].x}))));
     const int x1 =
-        std::min(kSize - 1, static_cast<int>(std::ceil(std::max({v[0].x, v[1].x, v[2].x}))));
+        std::min(kTargetSize - 1, static_cast<int>(std::ceil(std::max({v[0].x, v[1].x, v[2].x}))));
     const int y0 = std::max(0, static_cast<int>(std::floor(std::min({v[0].y, v[1].y, v[2].y}))));
     const int y1 =
-        std::min(kSize - 1, static_cast<int>(std::ceil(std::max({v[0].y, v[1].y, v[2].y}))));
+        std::min(kTargetSize - 1, static_cast<int>(std::ceil(std::max({v[0].y, v[1].y, v[2].y}))));
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
-        const std::uint8_t* pixel = &rgba[(std::size_t(y) * kSize + x) * 4];
+        const std::uint8_t* pixel = &rgba[(std::size_t(y) * kTargetSize + x) * 4];
         if (pixel[3] == 0) continue;  // not covered (alpha is 1 wherever drawn)
         const double px = x + 0.5, py = y + 0.5;
         double b[3];
@@ -110,8 +110,8 @@ void add_triangle(std::mt19937_64& rng, double extent, double aspect, double w_l
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double angle = 2.0 * std::numbers::pi * unit(rng);
   const double dx = std::cos(angle), dy = std::sin(angle);
-  const double cx = extent + (kSize - 2 * extent) * unit(rng);
-  const double cy = extent + (kSize - 2 * extent) * unit(rng);
+  const double cx = extent + (kTargetSize - 2 * extent) * unit(rng);
+  const double cy = extent + (kTargetSize - 2 * extent) * unit(rng);
   const double length = extent / 2.0, width = extent / aspect / 2.0;
   const double skew = length * (unit(rng) - 0.5);
   const double corners[3][2] = {{cx - length * dx, cy - length * dy},
@@ -146,12 +146,12 @@ std::string label(InterpolationMethod method, Perspective perspective) {
   return perspective == Perspective::affine ? name + ", affine" : name;
 }
 
-constexpr const char* kPareto = "interpolation-pareto";
+constexpr const char* kInterpolationPareto = "interpolation-pareto";
 constexpr const char* kDepthRatio = "interpolation-depth-ratio";
 constexpr const char* kSlivers = "interpolation-slivers";
 
-void pareto(const StudySettings& settings, StudyOutput& out) {
-  out.add_chart({kPareto, "Error against time per fragment, every method and ISA",
+void interpolation_pareto(const StudySettings& settings, StudyOutput& out) {
+  out.add_chart({kInterpolationPareto, "Error against time per fragment, every method and ISA",
                  "ns per fragment", "RMSE against the exact value (attribute in [0, 1])", true,
                  true, ChartKind::scatter, ""});
   std::mt19937_64 rng(0x1e7e);
@@ -163,7 +163,7 @@ void pareto(const StudySettings& settings, StudyOutput& out) {
   DrawMesh mesh;
   mesh.positions = positions;
   mesh.colors = triangles.colors;
-  Framebuffer target(kSize, kSize);
+  Framebuffer target(kTargetSize, kTargetSize);
   std::vector<std::pair<InterpolationMethod, Perspective>> methods;
   for (InterpolationMethod method : kInterpolationMethods)
     methods.emplace_back(method, Perspective::correct);
@@ -180,7 +180,7 @@ void pareto(const StudySettings& settings, StudyOutput& out) {
               "interpolation/" + label(method, perspective) + "/" + std::string(name_of(isa)),
               [&] { draw(target, mesh, options); }, settings.timer) /
           static_cast<double>(std::max<std::uint64_t>(report.fragments, 1));
-      out.add(kPareto, label(method, perspective), ns, error.rmse());
+      out.add(kInterpolationPareto, label(method, perspective), ns, error.rmse());
       if (method == InterpolationMethod::plane_equations && perspective == Perspective::correct &&
           (best_name.empty() || ns < best_ns)) {
         best_name = std::string(name_of(isa));
@@ -201,7 +201,7 @@ void pareto(const StudySettings& settings, StudyOutput& out) {
                 "Nearest vertex and inverse distance are not interpolation of the value, and "
                 "affine weights miss by the depth range.",
                 exact_floor, 1.0 / 255.0, best_name.c_str(), best_ns, best_rmse);
-  out.set_reading(kPareto, reading);
+  out.set_reading(kInterpolationPareto, reading);
 }
 
 void depth_ratio(const StudySettings& settings, StudyOutput& out) {
@@ -268,7 +268,7 @@ void slivers(const StudySettings& settings, StudyOutput& out) {
 
 StudyOutput interpolation_study(const StudySettings& settings, const std::string& cpu) {
   StudyOutput out("interpolation", "Interpolation: every method against the exact value", cpu);
-  pareto(settings, out);
+  interpolation_pareto(settings, out);
   depth_ratio(settings, out);
   slivers(settings, out);
   return out;

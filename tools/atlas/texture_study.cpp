@@ -27,7 +27,7 @@ using namespace texture_quality;
 namespace ts = texture_scene;
 
 constexpr std::int32_t kTextureSize = 1024;
-constexpr const char* kPareto = "texture-pareto";
+constexpr const char* kTexturePareto = "texture-pareto";
 constexpr const char* kAnisotropy = "texture-anisotropy";
 constexpr const char* kSummedArea = "texture-summed-area";
 
@@ -38,13 +38,13 @@ double rmse_of(std::span<const Vec4> colours, const ts::LinearImage& truth) {
 // The checkerboard ground plane (the view of edgewise-texture-quality, at a quarter of full HD;
 // its ground truth is cached as that tool caches it). A quick run takes the magnification view,
 // whose ground truth takes a moment where the ground plane's takes a minute.
-void pareto(const StudySettings& settings, StudyOutput& out) {
+void texture_pareto(const StudySettings& settings, StudyOutput& out) {
   const std::int32_t width = settings.quick ? 96 : 960, height = settings.quick ? 54 : 540;
   const SceneView scene = settings.quick ? SceneView::magnification : SceneView::ground_plane;
   const std::string scene_name(scene_view_name(scene));
   std::string title = "Error against time per sample, checkerboard " + scene_name;
   std::replace(title.begin(), title.end(), '_', ' ');
-  out.add_chart({kPareto, title, "ns per sample", "RMSE against ground truth", true, true,
+  out.add_chart({kTexturePareto, title, "ns per sample", "RMSE against ground truth", true, true,
                  ChartKind::scatter, ""});
   const ts::LinearImage image = scene_texture_image(SceneTexture::checkerboard, kTextureSize);
   const Texture texture = scene_texture(image, PyramidFilter::box);
@@ -65,7 +65,7 @@ void pareto(const StudySettings& settings, StudyOutput& out) {
                                          },
                                          settings.timer);
       const double rmse = rmse_of(colours, truth.truth.image);
-      out.add(kPareto, method.name, ns, rmse);
+      out.add(kTexturePareto, method.name, ns, rmse);
       if (method.name == "trilinear") trilinear = rmse;
     }
   }
@@ -77,7 +77,7 @@ void pareto(const StudySettings& settings, StudyOutput& out) {
         median_nanoseconds(
             "texture/" + name, [&] { peer.sample(mode, queries, colours); }, settings.timer);
     const double rmse = rmse_of(colours, truth.truth.image);
-    out.add(kPareto, name, ns, rmse);
+    out.add(kTexturePareto, name, ns, rmse);
     if (kPeerModeNames[mode] == "trilinear") peer_trilinear = rmse;
   }
   char reading[300];
@@ -85,7 +85,7 @@ void pareto(const StudySettings& settings, StudyOutput& out) {
                 "Lower left is better; each filter is a point per ISA. Trilinear's RMSE is %.4f "
                 "against OpenImageIO's trilinear %.4f on the same queries.",
                 trilinear, peer_trilinear);
-  out.set_reading(kPareto, reading);
+  out.set_reading(kTexturePareto, reading);
 }
 
 // An affine view of the band-limited texture whose every footprint has the same axes: `minor`
@@ -209,7 +209,7 @@ void summed_area(const StudySettings& settings, StudyOutput& out) {
 
 StudyOutput texture_study(const StudySettings& settings, const std::string& cpu) {
   StudyOutput out("texture", "Texture filtering: every filter against ground truth", cpu);
-  pareto(settings, out);
+  texture_pareto(settings, out);
   anisotropy(settings, out);
   summed_area(settings, out);
   return out;
