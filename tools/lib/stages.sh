@@ -32,20 +32,34 @@ edgewise_format_duration() {
 }
 
 EDGEWISE_CHECK_START=$(edgewise_now_us)
+EDGEWISE_CPU_TOTAL_S=0
+
+# edgewise_children_cpu_seconds FILE: writes to FILE the processor time, in whole seconds, that
+# this shell's finished children used (user and system: the second line of bash's `times`, run
+# in this shell itself, since a subshell's children are not its parent's), which is a stage's
+# when its subshell calls it last.
+edgewise_children_cpu_seconds() {
+  times >"$1"
+  awk 'function sec(t, m) {
+      m = t; sub(/m.*/, "", m); sub(/^[0-9]+m/, "", t); sub(/s$/, "", t); return m * 60 + t
+    } NR == 2 { printf "%d\n", sec($1) + sec($2) }' "$1" >"$1.seconds"
+  mv "$1.seconds" "$1"
+}
 
 edgewise_print_summary() {
-  local format='%-12s %-8s %8s %8s %8s %8s\n' row
+  local format='%-12s %-8s %8s %8s %8s %8s %8s\n' row
   echo
-  echo "==== Summary"
+  echo "==== Summary (cpu: the processor time of the stage's commands, summed over cores)"
   # shellcheck disable=SC2059 # the format is shared by every row
-  printf "$format" stage result time passed skipped failed
+  printf "$format" stage result time cpu passed skipped failed
   for row in "${EDGEWISE_STAGE_ROWS[@]}"; do
-    # shellcheck disable=SC2059,SC2086 # a row is six words
+    # shellcheck disable=SC2059,SC2086 # a row is seven words
     printf "$format" $row
   done
   local total=$(($(edgewise_now_us) - EDGEWISE_CHECK_START))
   # shellcheck disable=SC2059
   printf "$format" total "" "$(edgewise_format_duration "$total")" \
+    "$(edgewise_format_duration $((EDGEWISE_CPU_TOTAL_S * 1000000)))" \
     "$EDGEWISE_TESTS_PASSED" "$EDGEWISE_TESTS_SKIPPED" "$EDGEWISE_TESTS_FAILED"
 }
 
@@ -54,7 +68,7 @@ edgewise_print_summary() {
 edgewise_run_stage() {
   local name=$1 description=$2 function=$3
   if ! edgewise_stage_selected "$name"; then
-    EDGEWISE_STAGE_ROWS+=("$name not-run - - - -")
+    EDGEWISE_STAGE_ROWS+=("$name not-run - - - - -")
     return 0
   fi
 
@@ -68,6 +82,7 @@ edgewise_run_stage() {
     set -e
     export EDGEWISE_STAGE_COUNTS=$counts
     "$function"
+    edgewise_children_cpu_seconds "$counts.cpu"
   )
   status=$?
   set -e
@@ -84,7 +99,7 @@ EDGEWISE_BACKGROUND_STAGE=()
 edgewise_start_stage() {
   local name=$1 description=$2 function=$3
   if ! edgewise_stage_selected "$name"; then
-    EDGEWISE_STAGE_ROWS+=("$name not-run - - - -")
+    EDGEWISE_STAGE_ROWS+=("$name not-run - - - - -")
     return 0
   fi
   local counts log
@@ -96,6 +111,7 @@ edgewise_start_stage() {
     set -e
     export EDGEWISE_STAGE_COUNTS=$counts
     "$function"
+    edgewise_children_cpu_seconds "$counts.cpu"
   ) >"$log" 2>&1 &
   EDGEWISE_BACKGROUND_STAGE=("$name" "$!" "$(edgewise_now_us)" "$counts" "$log")
   # A check that ends early (a failed stage, an interrupt) stops it.
@@ -115,7 +131,8 @@ edgewise_stop_background_stage() {
   if ((${#EDGEWISE_BACKGROUND_STAGE[@]} > 0)); then
     edgewise_kill_tree "${EDGEWISE_BACKGROUND_STAGE[1]}"
     wait "${EDGEWISE_BACKGROUND_STAGE[1]}" 2>/dev/null || true
-    rm -f "${EDGEWISE_BACKGROUND_STAGE[3]}" "${EDGEWISE_BACKGROUND_STAGE[4]}"
+    rm -f "${EDGEWISE_BACKGROUND_STAGE[3]}" "${EDGEWISE_BACKGROUND_STAGE[3]}.cpu" \
+      "${EDGEWISE_BACKGROUND_STAGE[4]}"
     EDGEWISE_BACKGROUND_STAGE=()
   fi
 }
@@ -148,7 +165,13 @@ edgewise_record_stage() {
   while read -r p s f; do
     passed=$((passed + p)) skipped=$((skipped + s)) failed=$((failed + f))
   done <"$counts"
-  rm -f "$counts"
+  local cpu=- cpu_s
+  if [[ -s $counts.cpu ]]; then
+    read -r cpu_s <"$counts.cpu"
+    EDGEWISE_CPU_TOTAL_S=$((EDGEWISE_CPU_TOTAL_S + cpu_s))
+    cpu=$(edgewise_format_duration $((cpu_s * 1000000)))
+  fi
+  rm -f "$counts" "$counts.cpu"
   # A stage that fails outside ctest (a build error, a finding) counts as one failure.
   if ((status != 0 && failed == 0)); then
     failed=1
@@ -160,7 +183,7 @@ edgewise_record_stage() {
   local result=ok duration
   ((status == 0)) || result=FAILED
   duration=$(edgewise_format_duration "$elapsed")
-  EDGEWISE_STAGE_ROWS+=("$name $result $duration $passed $skipped $failed")
+  EDGEWISE_STAGE_ROWS+=("$name $result $duration $cpu $passed $skipped $failed")
   echo "==== [$name] $result in $duration"
   if ((status != 0)); then
     edgewise_print_summary
