@@ -1,29 +1,32 @@
 #!/usr/bin/env bash
 # tools/check's `fresh` stage: proves that tools/demo and tools/check install every Debian
-# package they use. Each command runs as the first command on its own minimal Debian 12 root
-# (debootstrap --variant=minbase: the essential packages and apt, nothing else), chrooted, as
-# root, in a network namespace whose only way out is a relay to the package mirror:
-#   1. tools/check with EDGEWISE_CHECK_STAGES=host,isa-objects,install: the Release build, the
+# package they use. One minimal Debian 12 root (debootstrap --variant=minbase: the essential
+# packages and apt, nothing else), chrooted, as root, in a network namespace whose only way out
+# is a relay to the package mirror, runs:
+#   1. tools/demo, as the root's first command; it must exit 0 and write its images;
+#   2. then, with the demo's sources, build, images and caches removed (its packages stay),
+#      tools/check with EDGEWISE_CHECK_STAGES=host,isa-objects,install: the Release build, the
 #      whole suite and the installed package (tools/check runs these stages here rather than on
-#      the machine itself when its fresh stage runs);
-#   2. tools/demo, which must exit 0 and write its images.
-# Both roots mount the compiler cache (tools/lib/ccache.sh), so the demo's build reuses the
-# check's objects: a compile hits only when every header it reads is there with the same bytes,
-# so a package the demo did not install still fails its build.
+#      the machine itself when its fresh stage runs).
+# The check's stages list every package the demo's list names (the script refuses to start
+# otherwise), so everything on the root when the check starts is something the check installs
+# itself: one root proves both lists, and its packages are installed once.
+# The root mounts the compiler cache (tools/lib/ccache.sh), so the check's build reuses the
+# demo's objects: a compile hits only when every header it reads is there with the same bytes.
 # A command that uses a package it did not install fails there: a program is missing, or CMake
 # stops at configure time (both commands configure with EDGEWISE_STRICT_DEPENDENCIES, so no
 # missing library silently leaves out a tool or a test).
 #
 #   tools/check_fresh_debian.sh WORK_DIR
 #
-# WORK_DIR holds the roots while they run (about 3 GB each). It is emptied first, and again at
-# the end when both commands pass; a failed command's root stays there to look into
-# (chroot WORK_DIR/<command>/root).
+# WORK_DIR holds the root while it runs (about 4 GB). It is emptied first, and again at the end
+# when both commands pass; after a failed command the root stays there to look into
+# (chroot WORK_DIR/root).
 #
-# The root is built once and kept as a tarball in the cache folder, with the package files the
-# roots downloaded (apt's archive folder, shared by the roots): later runs unpack it in seconds,
-# and apt-get still installs every package from the mirror's current index. A tarball older
-# than 30 days is built again.
+# The minimal root is built once and kept as a tarball in the cache folder, with the package
+# files the root downloaded (apt's archive folder): later runs unpack it in seconds, and apt-get
+# still installs every package from the mirror's current index. A tarball older than 30 days is
+# built again.
 #
 # Environment:
 #   EDGEWISE_CACHE_DIR               the cache (default ${XDG_CACHE_HOME:-$HOME/.cache}/edgewise)
@@ -124,6 +127,20 @@ remove_tree() {
   rm -rf "$1"
 }
 
+# The check runs on the root after the demo, so its stages must list every package the demo's
+# list names: otherwise it could pass on a package that only the demo installed.
+# shellcheck source=lib/deps.sh
+source "$root/tools/lib/deps.sh"
+check_stages=${EDGEWISE_FRESH_CHECK_STAGES:-host,isa-objects,install}
+unlisted=$(comm -23 <(printf '%s\n' "${EDGEWISE_DEMO_PACKAGES[@]}" | sort -u) \
+  <(for stage in ${check_stages//,/ }; do edgewise_check_stage_packages "$stage"; done | sort -u))
+if [[ -n $unlisted ]]; then
+  echo "error: tools/demo installs packages that tools/check's stages $check_stages do not list" \
+    "(tools/lib/deps.sh): ${unlisted//$'\n'/ }; the check would not prove its own list on the" \
+    "demo's root" >&2
+  exit 1
+fi
+
 now() { date +%s; }
 elapsed() { printf '%d min %02d s' $((($(now) - $1) / 60)) $((($(now) - $1) % 60)); }
 
@@ -197,13 +214,10 @@ installed_packages() {
   chroot "$1" dpkg-query --show --showformat='${Package}\n' | sort
 }
 
-# run_fresh NAME ENV... -- COMMAND...: COMMAND in /root/edgewise of a new root, as its first
-# command. Leaves the root in $work/NAME/root.
-run_fresh() {
-  local name=$1
-  shift
-  local rootfs="$work/$name/root" start
-  start=$(now)
+# make_root ROOTFS: a new minimal root in ROOTFS, from the tarball, set up to reach the mirror
+# through the relays, with the working tree in /root/edgewise.
+make_root() {
+  local rootfs=$1
   mkdir -p "$rootfs"
   tar -C "$rootfs" --numeric-owner -xzf "$tarball"
   printf '%s' "$sources_list" >"$rootfs/etc/apt/sources.list"
@@ -224,26 +238,46 @@ path-exclude=/usr/share/info/*
 path-exclude=/usr/share/locale/*
 DPKG
   copy_sources "$rootfs/root/edgewise"
-  installed_packages "$rootfs" >"$work/$name/before"
+}
+
+# clear_home ROOTFS: removes what a command left in root's home and /tmp (the sources, builds,
+# images and caches), so the next command starts from the working tree alone; the installed
+# packages stay.
+clear_home() {
+  local rootfs=$1 entry
+  for entry in "$rootfs"/root/{,.}* "$rootfs"/tmp/{,.}*; do
+    [[ ${entry##*/} == . || ${entry##*/} == .. || ! -e $entry ]] && continue
+    remove_tree "$entry"
+  done
+  copy_sources "$rootfs/root/edgewise"
+}
+
+# run_in_root NAME ROOTFS ENV... -- COMMAND...: COMMAND in /root/edgewise of ROOTFS.
+run_in_root() {
+  local name=$1 rootfs=$2
+  shift 2
+  local start
+  start=$(now)
+  installed_packages "$rootfs" >"$work/$name.before"
 
   echo
-  echo "==== fresh: $name, the first command on a minimal Debian 12 root ($rootfs)"
+  echo "==== fresh: $name on the Debian 12 root $rootfs"
   local status=0
   unshare --mount --net --fork -- "$self" --inside "$rootfs" "$cache/apt-archives" \
     "$cache/ccache" "$relays" "$@" || status=$?
 
-  installed_packages "$rootfs" >"$work/$name/after"
+  installed_packages "$rootfs" >"$work/$name.after"
   local installed
-  installed=$(comm -13 "$work/$name/before" "$work/$name/after" | wc -l)
+  installed=$(comm -13 "$work/$name.before" "$work/$name.after" | wc -l)
   echo "==== fresh: $name exited with status $status after $(elapsed "$start");" \
-    "it installed $installed packages on a root of $(wc -l <"$work/$name/before")"
+    "it installed $installed packages on a root of $(wc -l <"$work/$name.before")"
   return "$status"
 }
 
 # Checks the demo's images: each named file, and a textured one per filter, begins with PNG's
 # signature.
 check_demo_images() {
-  local out="$1/root/root/edgewise/out" image signature count=0
+  local out="$1/root/edgewise/out" image signature count=0
   for image in "$out/edgewise-render.png" "$out/edgewise-demo.png" "$out"/textured-*.png; do
     signature=$(od -An -tx1 -N8 "$image" 2>/dev/null | tr -d ' \n' || true)
     if [[ $signature != 89504e470d0a1a0a ]]; then
@@ -262,19 +296,19 @@ check_demo_images() {
 jobs_env=()
 [[ -n ${EDGEWISE_JOBS:-} ]] && jobs_env=("EDGEWISE_JOBS=$EDGEWISE_JOBS")
 stage_start=$(now)
+rootfs="$work/root"
+make_root "$rootfs"
+
+run_in_root demo "$rootfs" "${jobs_env[@]}" -- tools/demo
+check_demo_images "$rootfs"
+clear_home "$rootfs"
 
 counts=/root/edgewise/.check-counts
-run_fresh check "${jobs_env[@]}" \
-  "EDGEWISE_CHECK_STAGES=${EDGEWISE_FRESH_CHECK_STAGES:-host,isa-objects,install}" \
+run_in_root check "$rootfs" "${jobs_env[@]}" "EDGEWISE_CHECK_STAGES=$check_stages" \
   "EDGEWISE_CHECK_COUNTS_FILE=$counts" -- tools/check
 if [[ -n ${EDGEWISE_FRESH_COUNTS_FILE:-} ]]; then
-  cp "$work/check/root$counts" "$EDGEWISE_FRESH_COUNTS_FILE"
+  cp "$rootfs$counts" "$EDGEWISE_FRESH_COUNTS_FILE"
 fi
-remove_tree "$work/check"
-
-run_fresh demo "${jobs_env[@]}" -- tools/demo
-check_demo_images "$work/demo"
-remove_tree "$work/demo"
 
 remove_tree "$work"
-echo "fresh: tools/demo and tools/check passed on fresh Debian 12 roots in $(elapsed "$stage_start")"
+echo "fresh: tools/demo, then tools/check, passed on a fresh Debian 12 root in $(elapsed "$stage_start")"

@@ -74,6 +74,17 @@ for key in "${!readme_packages[@]}"; do
   fail "README.md has a row for '$key', which is not tools/demo or a stage of tools/check"
 done
 
+# The fresh stage runs the check on the demo's root (tools/check_fresh_debian.sh): the check's
+# stages there must list every package of the demo's list, or the check could pass on one that
+# only the demo installed.
+fresh_check_packages=$(for stage in host isa-objects install; do
+  edgewise_check_stage_packages "$stage"
+done | sort -u)
+unlisted=$(comm -23 <(printf '%s\n' "${EDGEWISE_DEMO_PACKAGES[@]}" | sort -u) \
+  <(printf '%s\n' "$fresh_check_packages"))
+[[ -z $unlisted ]] || fail "tools/demo installs packages that the check's host, isa-objects" \
+  "and install stages do not list: ${unlisted//$'\n'/ }"
+
 # Each package's reason, beside it.
 for package in $(printf '%s\n' "${all_packages[@]}" | sort -u); do
   if ! grep -qE "^[[:space:]]*${package//+/\\+}[[:space:]]+#[[:space:]]*[^[:space:]]" "$deps"; then

@@ -67,9 +67,10 @@ EDGEWISE_CHECK_AARCH64_PACKAGES=(
   qemu-user             # runs the AArch64 test binaries (qemu-aarch64)
   ccache                # the compiler cache the builds share (tools/lib/ccache.sh)
 )
-# The host build without the benchmarks, instrumented.
+# The host build without the benchmarks, instrumented, with clang; the fuzz targets too.
 EDGEWISE_CHECK_SANITIZE_PACKAGES=(
-  g++                  # GCC 12 with its AddressSanitizer and UBSan runtimes
+  clang-14             # the instrumented build's compiler (libFuzzer needs clang)
+  libclang-rt-14-dev   # clang's AddressSanitizer, UBSan and libFuzzer runtimes
   cmake                # the build system
   ninja-build          # the generator
   libxsimd-dev         # the kernels' SIMD batches
@@ -91,15 +92,8 @@ EDGEWISE_CHECK_TSAN_PACKAGES=(
   libgtest-dev # GoogleTest: the tests
   ccache       # the compiler cache the builds share (tools/lib/ccache.sh)
 )
-EDGEWISE_CHECK_FUZZ_PACKAGES=(
-  clang-14           # the fuzz targets' compiler (libFuzzer needs clang)
-  libclang-rt-14-dev # libFuzzer and clang's sanitizer runtimes
-  cmake              # the build system
-  ninja-build        # the generator
-  libxsimd-dev       # the kernels' SIMD batches
-  libtbb-dev         # oneTBB, the library's threads
-  ccache             # the compiler cache the builds share (tools/lib/ccache.sh)
-)
+# The fuzz targets, built in the sanitize stage's build (the suite and the tools with them).
+EDGEWISE_CHECK_FUZZ_PACKAGES=("${EDGEWISE_CHECK_SANITIZE_PACKAGES[@]}")
 # The host build, installed, then a consumer project built against it with the same tools.
 EDGEWISE_CHECK_INSTALL_PACKAGES=("${EDGEWISE_CHECK_HOST_PACKAGES[@]}")
 EDGEWISE_CHECK_FRESH_PACKAGES=(

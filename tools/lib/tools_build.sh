@@ -5,15 +5,15 @@
 # edgewise_build_tools ROOT TARGET...: configures ROOT/build (a fresh one gets only the library
 # and the tools: no tests, no benchmarks; an existing one keeps its other settings) and builds
 # the TARGETs. Strict: a missing image or mesh library stops the configure step with its name,
-# rather than leaving the tools undefined. Compiles through the compiler cache, reading only
-# (tools/lib/ccache.sh: these flags lack the check's -Werror).
+# rather than leaving the tools undefined. Compiles through the compiler cache
+# (tools/lib/ccache.sh), which the check's host build then reuses.
 edgewise_build_tools() {
   local root=$1
   shift
   local build_dir="$root/build"
   # shellcheck source=ccache.sh
   source "$root/tools/lib/ccache.sh"
-  edgewise_ccache_launcher "$root" read-only
+  edgewise_ccache_launcher "$root"
   local configure=(-DCMAKE_BUILD_TYPE=Release -DEDGEWISE_BUILD_TOOLS=ON
     -DEDGEWISE_STRICT_DEPENDENCIES=ON "${EDGEWISE_CCACHE_ARGS[@]}")
   if [[ ! -f $build_dir/CMakeCache.txt ]]; then
