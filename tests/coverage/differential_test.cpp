@@ -15,7 +15,6 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -23,6 +22,7 @@
 #include <vector>
 
 #include "coverage_result.hpp"
+#include "env_number.hpp"
 #include "isa_params.hpp"
 #include "random.hpp"
 #include "triangle_sources.hpp"
@@ -34,18 +34,6 @@ constexpr std::uint64_t kDefaultBudget = 1'000'000;
 constexpr std::uint64_t kDefaultSeed = 0x5eed'ed9e'0001ull;
 constexpr std::size_t kBatchSize = 512;
 constexpr int kMaxReportedMismatches = 3;
-
-std::uint64_t env_number(const char* name, std::uint64_t fallback) {
-  const char* text = std::getenv(name);
-  if (text == nullptr || *text == '\0') return fallback;
-  char* end = nullptr;
-  const std::uint64_t value = std::strtoull(text, &end, 0);
-  if (*end != '\0') {
-    ADD_FAILURE() << name << "=" << text << " is not a number; using " << fallback;
-    return fallback;
-  }
-  return value;
-}
 
 // FNV-1a: a stream per generator name, the same on every platform.
 std::uint64_t name_hash(std::string_view name) {
