@@ -1,14 +1,11 @@
 #include "common/image_file.hpp"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
-#include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include "common/output_file.hpp"
+#include "image_module/image_module.hpp"
 
 namespace edgewise::tools {
 
@@ -23,41 +20,29 @@ void write_image_file(const std::string& path, const ImagePixels& image) {
        image.channel_names.size() != static_cast<std::size_t>(image.channels))) {
     throw std::invalid_argument("write_image_file: empty or inconsistent image");
   }
-  const OIIO::TypeDesc type = is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
-  if (!image.channel_names.empty()) {
-    spec.channelnames = image.channel_names;
-    const auto index_of = [&image](const char* name) {
-      const auto found = std::find(image.channel_names.begin(), image.channel_names.end(), name);
-      return found == image.channel_names.end()
-                 ? -1
-                 : static_cast<int>(found - image.channel_names.begin());
-    };
-    spec.alpha_channel = index_of("A");
-    spec.z_channel = index_of("Z");
-  }
-  if (image.srgb) spec.attribute("oiio:ColorSpace", "sRGB");
-
   const auto fail = [&path](const std::string& reason) {
     // OpenImageIO's messages may span lines; the tools report one.
     std::string line = reason;
     std::replace(line.begin(), line.end(), '\n', ' ');
     throw std::runtime_error(path + ": cannot write: " + line);
   };
-  const void* pixels = is_float ? static_cast<const void*>(image.floats.data())
-                                : static_cast<const void*>(image.bytes.data());
+  EncodeRequest request;
+  request.width = image.width;
+  request.height = image.height;
+  request.channels = image.channels;
+  request.is_float = is_float;
+  request.pixels = is_float ? static_cast<const void*>(image.floats.data())
+                            : static_cast<const void*>(image.bytes.data());
+  request.channel_names = image.channel_names;
+  request.srgb = image.srgb;
   // Encoded in memory, then written by OutputFile: some of OpenImageIO's writers (PNG) do not
   // report a failed write to the file, so the file's own writes are ours to check.
   std::vector<unsigned char> encoded;
-  OIIO::Filesystem::IOVecOutput memory(encoded);
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-  if (!out) fail(OIIO::geterror());
-  if (!out->supports("ioproxy") || !out->set_ioproxy(&memory)) {
-    fail(std::string("OpenImageIO's ") + out->format_name() + " writer cannot encode in memory");
+  try {
+    encoded = image_module().encode(path, request);
+  } catch (const std::runtime_error& error) {
+    fail(error.what());
   }
-  if (!out->open(path, spec)) fail(out->geterror());
-  if (!out->write_image(type, pixels)) fail(out->geterror());
-  if (!out->close()) fail(out->geterror());
   write_whole_file(path, std::as_bytes(std::span<const unsigned char>(encoded)));
 }
 

@@ -2,55 +2,30 @@
 
 #include <unistd.h>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/texture.h>
-
 #include <cstdint>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
 
+#include "image_module/image_module.hpp"
+
 namespace edgewise::texture_quality {
 namespace {
 
+// In kPeerModeNames' order, as bench/sample_bench.cpp sets them: TextureLookup::sample's mip
+// mode, interpolation and anisotropy.
 struct PeerMode {
-  OIIO::TextureOpt::MipMode mip;
-  OIIO::TextureOpt::InterpMode interpolation;
+  int mip;
+  int interpolation;
   int anisotropy;
 };
-
-// In kPeerModeNames' order, as bench/sample_bench.cpp sets them.
-constexpr PeerMode kPeerModes[] = {
-    {OIIO::TextureOpt::MipModeNoMIP, OIIO::TextureOpt::InterpClosest, 1},
-    {OIIO::TextureOpt::MipModeNoMIP, OIIO::TextureOpt::InterpBilinear, 1},
-    {OIIO::TextureOpt::MipModeNoMIP, OIIO::TextureOpt::InterpBicubic, 1},
-    {OIIO::TextureOpt::MipModeTrilinear, OIIO::TextureOpt::InterpBilinear, 1},
-    {OIIO::TextureOpt::MipModeAniso, OIIO::TextureOpt::InterpBilinear, 16},
-};
+constexpr PeerMode kPeerModes[] = {{0, 0, 1}, {0, 1, 1}, {0, 2, 1}, {1, 1, 1}, {2, 1, 16}};
 static_assert(std::size(kPeerModes) == std::size(kPeerModeNames));
-
-void write_texture_file(const texture_scene::LinearImage& image,
-                        const std::filesystem::path& path) {
-  const std::vector<std::uint8_t> texels = texture_scene::to_rgba8(image);
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-  // ImageBuf only reads the wrapped memory here.
-  OIIO::ImageBuf buffer(spec, const_cast<std::uint8_t*>(texels.data()));
-  OIIO::ImageSpec config;
-  config.attribute("maketx:filtername", "box");
-  if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, buffer, path.string(),
-                                        config)) {
-    throw std::runtime_error(path.string() +
-                             ": OpenImageIO cannot write the texture: " + OIIO::geterror());
-  }
-}
 
 }  // namespace
 
 struct OiioPeer::System {
-  OIIO::TextureSystem* system = nullptr;
-  OIIO::TextureSystem::Perthread* thread = nullptr;
-  OIIO::TextureSystem::TextureHandle* handle = nullptr;
+  std::unique_ptr<tools::TextureLookup> lookup;
 };
 
 OiioPeer::OiioPeer(const texture_scene::LinearImage& image, std::string_view label)
@@ -58,16 +33,14 @@ OiioPeer::OiioPeer(const texture_scene::LinearImage& image, std::string_view lab
             ("edgewise-texture-quality-" + std::to_string(::getpid()) + "-" + std::string(label) +
              ".tx")),
       system_(std::make_unique<System>()) {
-  write_texture_file(image, file_);
-  // The process-wide system: destroying a private one trips AddressSanitizer on a sized delete
-  // inside OpenImageIO 2.4 (new-delete-type-mismatch); the shared one is only released by it.
-  system_->system = OIIO::TextureSystem::create(/*shared=*/true);
-  system_->thread = system_->system->get_perthread_info();
-  system_->handle = system_->system->get_texture_handle(OIIO::ustring(file_.string()));
+  const std::vector<std::uint8_t> texels = texture_scene::to_rgba8(image);
+  const tools::ImageModule& module = tools::image_module();
+  module.write_texture_file(file_.string(), image.width, image.height, texels);
+  system_->lookup = module.open_texture(file_.string());
 }
 
 OiioPeer::~OiioPeer() {
-  if (system_->system != nullptr) OIIO::TextureSystem::destroy(system_->system);
+  system_->lookup.reset();
   std::error_code ignored;
   std::filesystem::remove(file_, ignored);
 }
@@ -77,23 +50,8 @@ void OiioPeer::sample(std::size_t mode, std::span<const TextureQuery> queries,
   if (mode >= std::size(kPeerModes) || queries.size() != out.size()) {
     throw std::invalid_argument("OiioPeer::sample: mode out of range or spans' sizes differ");
   }
-  OIIO::TextureOpt options;
-  options.swrap = options.twrap = OIIO::TextureOpt::WrapPeriodic;
-  options.mipmode = kPeerModes[mode].mip;
-  options.interpmode = kPeerModes[mode].interpolation;
-  options.anisotropic = kPeerModes[mode].anisotropy;
-  bool ok = true;
-  for (std::size_t i = 0; i < queries.size(); ++i) {
-    const TextureQuery& q = queries[i];
-    float rgba[4];
-    ok &= system_->system->texture(system_->handle, system_->thread, options, q.s, q.t, q.dsdx,
-                                   q.dtdx, q.dsdy, q.dtdy, 4, rgba);
-    out[i] = Vec4{rgba[0], rgba[1], rgba[2], rgba[3]};
-  }
-  if (!ok) {
-    throw std::runtime_error(file_.string() +
-                             ": OpenImageIO lookup failed: " + system_->system->geterror());
-  }
+  const PeerMode& m = kPeerModes[mode];
+  system_->lookup->sample(m.mip, m.interpolation, m.anisotropy, queries, out);
 }
 
 }  // namespace edgewise::texture_quality
