@@ -79,9 +79,8 @@ class ImageModule {
 // the build put it). Throws std::runtime_error when it cannot be loaded.
 const ImageModule& image_module();
 
-}  // namespace edgewise::tools
+// The type of the module's one exported function, extern "C" edgewise_image_module: the module,
+// or null when `version` is not the kImageModuleVersion it was built with.
+using ImageModuleEntry = const ImageModule* (*)(int version);
 
-// The module's one exported symbol.
-extern "C" {
-using EdgewiseImageModuleEntry = const edgewise::tools::ImageModule* (*)(int version);
-}
+}  // namespace edgewise::tools

@@ -33,8 +33,7 @@ const ImageModule* load() {
       reasons += std::string(reasons.empty() ? "" : "; ") + ::dlerror();
       continue;
     }
-    const auto entry =
-        reinterpret_cast<EdgewiseImageModuleEntry>(::dlsym(handle, "edgewise_image_module"));
+    const auto entry = reinterpret_cast<ImageModuleEntry>(::dlsym(handle, "edgewise_image_module"));
     const ImageModule* module = entry != nullptr ? entry(kImageModuleVersion) : nullptr;
     if (module != nullptr) return module;  // loaded for the rest of the run
     reasons += std::string(reasons.empty() ? "" : "; ") + path +

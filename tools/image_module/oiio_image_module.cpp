@@ -20,7 +20,7 @@ namespace {
 
 class OiioReader final : public ImageReader {
  public:
-  OiioReader(std::unique_ptr<OIIO::ImageInput> in) : in_(std::move(in)) {
+  explicit OiioReader(std::unique_ptr<OIIO::ImageInput> in) : in_(std::move(in)) {
     const OIIO::ImageSpec& spec = in_->spec();
     header_.width = spec.width;
     header_.height = spec.height;
