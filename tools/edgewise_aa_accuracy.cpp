@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <iomanip>
 #include <iostream>
 #include <numbers>
@@ -20,6 +21,7 @@
 #include "aa_accuracy/coverage_modes.hpp"
 #include "common/isa_options.hpp"
 #include "common/median.hpp"
+#include "common/option_values.hpp"
 #include "common/output_file.hpp"
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
@@ -120,17 +122,31 @@ int main(int argc, char** argv) {
   Arguments arguments;
   return tools::run_tool(
       argc, argv, "edgewise-aa-accuracy", {"[--triangles N] [--seed S] [--isa NAME] [--csv FILE]"},
-      [&arguments](CLI::App& app) {
-        app.description(kDescription);
-        app.add_option("--triangles", arguments.triangles, "random triangles (default 2000)")
-            ->check(CLI::Range(std::size_t{1}, std::size_t{1000000}))
-            ->type_name("N");
-        app.add_option("--seed", arguments.seed, "the random triangles' seed (default 1)")
-            ->type_name("S");
-        tools::add_isa_options(app, arguments.isa,
+      [&arguments](tools::CommandLine& command_line) {
+        command_line.description(kDescription);
+        tools::add_parsed_option(
+            command_line, "--triangles", arguments.triangles,
+            [](const std::string& text) {
+              return static_cast<std::size_t>(tools::unsigned_in("--triangles", text, 1, 1000000));
+            },
+            "random triangles, 1..1000000 (default 2000)")
+            .type_name("N");
+        tools::add_parsed_option(
+            command_line, "--seed", arguments.seed,
+            [](const std::string& text) {
+              return tools::unsigned_in("--seed", text, 0,
+                                        std::numeric_limits<std::uint64_t>::max());
+            },
+            "the random triangles' seed (default 1)")
+            .type_name("S");
+        tools::add_isa_options(command_line, arguments.isa,
                                "the ISA of the fast paths (default: the best of this CPU)",
                                "measure the reference's paths");
-        app.add_option("--csv", arguments.csv, "also write the table to FILE")->type_name("FILE");
+        tools::add_parsed_option(
+            command_line, "--csv", arguments.csv,
+            [](const std::string& path) { return std::optional(path); },
+            "also write the table to FILE")
+            .type_name("FILE");
         return [&arguments] { return run(arguments); };
       });
 }

@@ -21,6 +21,7 @@
 #endif
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
+#include "common/value_options.hpp"
 
 namespace {
 
@@ -56,17 +57,19 @@ int main(int argc, char** argv) {
   return tools::run_tool(
       argc, argv, "edgewise-atlas-study",
       {"STUDY [-o DIR] [--quick] [--repetitions N] [--cache DIR]"},
-      [&](CLI::App& app) -> tools::ToolWork {
-        app.description(kDescription);
-        app.add_option("study", study, "the study: coverage, interpolation, depth, texture or aa")
-            ->required();
-        app.add_option("-o,--out", out_dir, "output folder (made if missing; default atlas)");
-        app.add_flag("--quick", quick, "a short run with few cases, for testing the tool");
-        app.add_option("--cache", cache,
-                       "where ground truths are kept (default: edgewise-texture-quality's, "
-                       "$XDG_CACHE_HOME/edgewise or ~/.cache/edgewise)");
-        app.add_option("--repetitions", repetitions, "timed repetitions per method (default 5)")
-            ->check(CLI::Range(2, 100));
+      [&](tools::CommandLine& command_line) -> tools::ToolWork {
+        command_line.description(kDescription);
+        tools::add_text_option(command_line, "study", study,
+                               "the study: coverage, interpolation, depth, texture or aa")
+            .required();
+        tools::add_text_option(command_line, "-o,--out", out_dir,
+                               "output folder (made if missing; default atlas)");
+        command_line.add_flag("--quick", quick, "a short run with few cases, for testing the tool");
+        tools::add_text_option(command_line, "--cache", cache,
+                               "where ground truths are kept (default: edgewise-texture-quality's, "
+                               "$XDG_CACHE_HOME/edgewise or ~/.cache/edgewise)");
+        tools::add_integer_option(command_line, "--repetitions", repetitions, 2, 100,
+                                  "timed repetitions per method, 2..100 (default 5)");
         return [&]() {
           atlas::TimerSettings timer;
           timer.repetitions = repetitions;

@@ -57,16 +57,16 @@ struct InputError : std::runtime_error {
 };
 
 // W or H: an integer in 0..kMaxTargetSize.
-CLI::Option* add_dimension(CLI::App& app, const std::string& name, const std::string& what,
-                           std::int32_t& value) {
+tools::Option add_dimension(tools::CommandLine& command_line, const std::string& name,
+                            const std::string& what, std::int32_t& value) {
   return tools::add_parsed_option(
-             app, name, value,
+             command_line, name, value,
              [what](const std::string& text) {
                return static_cast<std::int32_t>(tools::integer_in(what, text, 0, kMaxTargetSize));
              },
              "the target's " + what + " in pixels, 0.." + std::to_string(kMaxTargetSize))
-      ->type_name("")
-      ->required();
+      .type_name("")
+      .required();
 }
 
 // A float as written, or nullopt. NaN and infinity are accepted: they are valid input that the
@@ -484,22 +484,26 @@ struct Arguments {
   bool area = false;
 };
 
-void add_options(CLI::App& app, Arguments& arguments) {
-  app.description(kDescription);
-  add_dimension(app, "W", "width", arguments.target.width);
-  add_dimension(app, "H", "height", arguments.target.height);
-  app.add_option("TRIANGLES", arguments.triangles, "the triangles' file, '-' for standard input")
-      ->type_name("")
-      ->required();
-  tools::add_isa_options(app, arguments.isa,
+void add_options(tools::CommandLine& command_line, Arguments& arguments) {
+  command_line.description(kDescription);
+  add_dimension(command_line, "W", "width", arguments.target.width);
+  add_dimension(command_line, "H", "height", arguments.target.height);
+  tools::add_text_option(command_line, "TRIANGLES", arguments.triangles,
+                         "the triangles' file, '-' for standard input")
+      .type_name("")
+      .required();
+  tools::add_isa_options(command_line, arguments.isa,
                          "the ISA to rasterize with (default: the best ISA of this CPU, or "
                          "EDGEWISE_ISA)",
                          "rasterize with the scalar reference");
-  app.add_option("-o", arguments.output, "write the output to FILE")->type_name("FILE");
-  app.add_flag("--compare-isas", arguments.compare,
-               "compare every supported ISA with the reference");
   tools::add_parsed_option(
-      app, "--samples", arguments.samples,
+      command_line, "-o", arguments.output,
+      [](const std::string& path) { return std::optional(path); }, "write the output to FILE")
+      .type_name("FILE");
+  command_line.add_flag("--compare-isas", arguments.compare,
+                        "compare every supported ISA with the reference");
+  tools::add_parsed_option(
+      command_line, "--samples", arguments.samples,
       [](const std::string& text) {
         const auto samples = static_cast<int>(tools::integer_in("--samples", text, 1, 16));
         if (!is_standard_sample_count(samples)) {
@@ -510,9 +514,10 @@ void add_options(CLI::App& app, Arguments& arguments) {
       },
       "samples per pixel: 1 (the pixel centre, the default), 2, 4, 8 or 16 (the standard "
       "multisample patterns)")
-      ->type_name("N");
-  app.add_flag("--area", arguments.area,
-               "print each pixel's exact area inside the triangle instead of covered samples");
+      .type_name("N");
+  command_line.add_flag(
+      "--area", arguments.area,
+      "print each pixel's exact area inside the triangle instead of covered samples");
 }
 
 int run(const Arguments& arguments) {
@@ -561,8 +566,8 @@ int main(int argc, char** argv) {
       argc, argv, "edgewise-coverage",
       {"W H TRIANGLES [--samples N | --area] [--isa NAME | --reference] [-o FILE]",
        "W H TRIANGLES [--samples N | --area] --compare-isas"},
-      [&arguments](CLI::App& app) {
-        add_options(app, arguments);
+      [&arguments](tools::CommandLine& command_line) {
+        add_options(command_line, arguments);
         return [&arguments] { return run(arguments); };
       });
 }

@@ -505,12 +505,14 @@ int run(const std::string& output) {
 
 int main(int argc, char** argv) {
   std::string output = "out/edgewise-demo.png";
-  return tools::run_tool(argc, argv, "edgewise-demo", {"[-o FILE.png]"}, [&output](CLI::App& app) {
-    app.description(
-        "Renders a 2D test pattern to a PNG, checks that every ISA covers it exactly like the\n"
-        "reference, and prints per-ISA coverage throughput.");
-    app.add_option("-o", output, "the PNG to write (default out/edgewise-demo.png)")
-        ->type_name("FILE.png");
-    return [&output] { return run(output); };
-  });
+  return tools::run_tool(
+      argc, argv, "edgewise-demo", {"[-o FILE.png]"}, [&output](tools::CommandLine& command_line) {
+        command_line.description(
+            "Renders a 2D test pattern to a PNG, checks that every ISA covers it exactly like the\n"
+            "reference, and prints per-ISA coverage throughput.");
+        tools::add_text_option(command_line, "-o", output,
+                               "the PNG to write (default out/edgewise-demo.png)")
+            .type_name("FILE.png");
+        return [&output] { return run(output); };
+      });
 }

@@ -695,8 +695,9 @@ int run(const RenderSettings& settings) {
 
 int main(int argc, char** argv) {
   RenderCommandLine line;
-  return tools::run_tool(argc, argv, "edgewise-render", usage_lines(), [&line](CLI::App& app) {
-    add_options(app, line);
-    return [&app, &line] { return run(checked_settings(app, line)); };
-  });
+  return tools::run_tool(
+      argc, argv, "edgewise-render", usage_lines(), [&line](tools::CommandLine& command_line) {
+        add_options(command_line, line);
+        return [command_line, &line] { return run(checked_settings(command_line, line)); };
+      });
 }

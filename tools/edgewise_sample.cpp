@@ -143,8 +143,9 @@ int run(const SampleSettings& settings) {
 
 int main(int argc, char** argv) {
   SampleSettings settings;
-  return tools::run_tool(argc, argv, "edgewise-sample", usage_lines(), [&settings](CLI::App& app) {
-    add_options(app, settings);
-    return [&settings] { return run(settings); };
-  });
+  return tools::run_tool(argc, argv, "edgewise-sample", usage_lines(),
+                         [&settings](tools::CommandLine& command_line) {
+                           add_options(command_line, settings);
+                           return [&settings] { return run(settings); };
+                         });
 }

@@ -18,8 +18,10 @@
 #include "common/choice_options.hpp"
 #include "common/image_file.hpp"
 #include "common/isa_options.hpp"
+#include "common/option_values.hpp"
 #include "common/run_tool.hpp"
 #include "common/usage_error.hpp"
+#include "common/value_options.hpp"
 #include "edgewise/edgewise.hpp"
 
 namespace {
@@ -263,26 +265,37 @@ int main(int argc, char** argv) {
   return tools::run_tool(
       argc, argv, "edgewise-strokes",
       {"[--samples N | --exact] [--tolerance PX] [--resolve box|tent|mitchell] [--srgb] [-o FILE]"},
-      [&arguments](CLI::App& app) {
-        app.description(
+      [&arguments](tools::CommandLine& command_line) {
+        command_line.description(
             "Strokes a sheet of polylines and quadratic curves (every join and cap, widths from\n"
             "a hairline to 24 px), paints it into a multisampled target and resolves it.");
-        CLI::Option* samples =
-            app.add_option("--samples", arguments.samples, "samples per pixel (default 8)")
-                ->type_name("N");
-        app.add_option("--tolerance", arguments.tolerance,
-                       "flattening and arc tolerance in px, 0.0009765625 (2^-10) to 64\n"
-                       "(default 0.125)")
-            ->type_name("PX");
-        tools::add_enum_option(app, "--resolve", arguments.filter, "the resolve filter");
-        app.add_flag("--srgb", arguments.srgb, "write sRGB-encoded values (else linear)");
-        app.add_flag("--exact", arguments.exact,
-                     "blend each triangle by its exact area instead (one sample per\n"
-                     "pixel): shows the conflation at the seams between a stroke's triangles")
-            ->excludes(samples);
-        tools::add_isa_options(app, arguments.isa, "the ISA (default: the best of this CPU)",
+        const tools::Option samples =
+            tools::add_parsed_option(
+                command_line, "--samples", arguments.samples,
+                [](const std::string& text) {
+                  return static_cast<int>(tools::integer_in("--samples", text, 1, 16));
+                },
+                "samples per pixel (default 8)")
+                .type_name("N");
+        tools::add_number_option(command_line, "--tolerance", arguments.tolerance,
+                                 "flattening and arc tolerance in px, 0.0009765625 (2^-10) to 64\n"
+                                 "(default 0.125)")
+            .type_name("PX");
+        tools::add_enum_option(command_line, "--resolve", arguments.filter, "the resolve filter");
+        command_line.add_flag("--srgb", arguments.srgb, "write sRGB-encoded values (else linear)");
+        command_line
+            .add_flag("--exact", arguments.exact,
+                      "blend each triangle by its exact area instead (one sample per\n"
+                      "pixel): shows the conflation at the seams between a stroke's triangles")
+            .excludes(samples);
+        tools::add_isa_options(command_line, arguments.isa,
+                               "the ISA (default: the best of this CPU)",
                                "paint with the reference");
-        app.add_option("-o", arguments.output, "write the image (PNG or EXR)")->type_name("FILE");
+        tools::add_parsed_option(
+            command_line, "-o", arguments.output,
+            [](const std::string& path) { return std::optional(path); },
+            "write the image (PNG or EXR)")
+            .type_name("FILE");
         return [&arguments] { return run(arguments); };
       });
 }

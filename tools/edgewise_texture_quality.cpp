@@ -234,8 +234,8 @@ int run(const QualitySettings& settings) {
 int main(int argc, char** argv) {
   QualitySettings settings;
   return tools::run_tool(argc, argv, "edgewise-texture-quality", usage_lines(),
-                         [&settings](CLI::App& app) {
-                           add_options(app, settings);
+                         [&settings](tools::CommandLine& command_line) {
+                           add_options(command_line, settings);
                            return [&settings] { return run(settings); };
                          });
 }

@@ -166,34 +166,37 @@ struct Arguments {
 
 // An integer in lo..hi, named `what` in messages.
 template <class Int>
-CLI::Option* add_count(CLI::App& app, const std::string& name, const std::string& what, Int& value,
-                       std::uint64_t lo, std::uint64_t hi, const std::string& description) {
+edgewise::tools::Option add_count(edgewise::tools::CommandLine& command_line,
+                                  const std::string& name, const std::string& what, Int& value,
+                                  std::uint64_t lo, std::uint64_t hi,
+                                  const std::string& description) {
   return edgewise::tools::add_parsed_option(
-             app, name, value,
+             command_line, name, value,
              [what, lo, hi](const std::string& text) {
                return static_cast<Int>(edgewise::tools::unsigned_in(what, text, lo, hi));
              },
              description)
-      ->type_name("");
+      .type_name("");
 }
 
-void add_options(CLI::App& app, Arguments& arguments) {
-  app.description(kDescription);
+void add_options(edgewise::tools::CommandLine& command_line, Arguments& arguments) {
+  command_line.description(kDescription);
   const std::uint64_t max_side = edgewise::kMaxTargetSize;
-  add_count(app, "W", "width", arguments.width, 1, max_side,
+  add_count(command_line, "W", "width", arguments.width, 1, max_side,
             "the target's width in pixels, 1.." + std::to_string(max_side))
-      ->required();
-  add_count(app, "H", "height", arguments.height, 1, max_side,
+      .required();
+  add_count(command_line, "H", "height", arguments.height, 1, max_side,
             "the target's height in pixels, 1.." + std::to_string(max_side))
-      ->required();
-  add_count(app, "COUNT", "count", arguments.count, 0, 100'000'000,
+      .required();
+  add_count(command_line, "COUNT", "count", arguments.count, 0, 100'000'000,
             "how many triangles, 0..100000000")
-      ->required();
-  add_count(app, "--seed", "seed", arguments.seed, 0, std::numeric_limits<std::uint64_t>::max(),
-            "the random generator's seed (default 1)")
-      ->type_name("N");
-  app.add_option("-o", arguments.output, "write to FILE (default: standard output)")
-      ->type_name("FILE");
+      .required();
+  add_count(command_line, "--seed", "seed", arguments.seed, 0,
+            std::numeric_limits<std::uint64_t>::max(), "the random generator's seed (default 1)")
+      .type_name("N");
+  edgewise::tools::add_text_option(command_line, "-o", arguments.output,
+                                   "write to FILE (default: standard output)")
+      .type_name("FILE");
 }
 
 int run(const Arguments& arguments) {
@@ -221,8 +224,9 @@ int run(const Arguments& arguments) {
 int main(int argc, char** argv) {
   Arguments arguments;
   return edgewise::tools::run_tool(argc, argv, "edgewise-random-triangles",
-                                   {"W H COUNT [--seed N] [-o FILE]"}, [&arguments](CLI::App& app) {
-                                     add_options(app, arguments);
+                                   {"W H COUNT [--seed N] [-o FILE]"},
+                                   [&arguments](edgewise::tools::CommandLine& command_line) {
+                                     add_options(command_line, arguments);
                                      return [&arguments] { return run(arguments); };
                                    });
 }

@@ -1,7 +1,6 @@
 #include "common/isa_options.hpp"
 
 #include <algorithm>
-#include <memory>
 #include <stdexcept>
 
 #include "common/option_values.hpp"
@@ -29,39 +28,37 @@ std::string supported_isa_names() {
 
 }  // namespace
 
-void add_isa_options(CLI::App& app, std::optional<Isa>& isa, const std::string& isa_description,
+void add_isa_options(CommandLine& line, std::optional<Isa>& isa, const std::string& isa_description,
                      const std::string& reference_description) {
-  CLI::Option* named =
-      app.add_option_function<std::string>(
-             "--isa", [&isa](const std::string& name) { isa = parse_isa(name); }, isa_description)
-          ->type_name("NAME:" + supported_isa_names());
-  app.add_flag_callback(
+  const Option named =
+      line.add_value(
+              "--isa", [&isa](const std::string& name) { isa = parse_isa(name); }, isa_description)
+          .type_name("NAME:" + supported_isa_names());
+  line.add_flag(
       "--reference",
       [&isa, named] {
-        // --isa's callback, defined first, has run when it was given.
-        if (named->count() > 0) throw UsageError("give at most one of --isa and --reference");
+        // --isa's function, added first, has run when it was given.
+        if (named.count() > 0) throw UsageError("give at most one of --isa and --reference");
         isa = Isa::reference;
       },
       reference_description);
 }
 
-void add_isa_list_options(CLI::App& app, std::vector<Isa>& isas, const std::string& isa_description,
+void add_isa_list_options(CommandLine& line, std::vector<Isa>& isas,
+                          const std::string& isa_description,
                           const std::string& reference_description) {
-  // CLI11 keeps each option's values apart; the order of --isa and --reference between them is
-  // in the app's parse order, read once both options' callbacks may have run.
-  struct Options {
-    CLI::Option* named = nullptr;
-    CLI::Option* reference = nullptr;
-  };
-  auto options = std::make_shared<Options>();
-  const auto collect = [&app, &isas, options] {
+  // Each option's values are kept apart; the order of --isa and --reference between them is the
+  // order the command line gave them in, read once both options' functions may have run.
+  const auto collect = [line, &isas] {
+    const Option named = line.option("--isa"), reference = line.option("--reference");
+    const std::vector<std::string> names = named.values();
     std::vector<Isa> given;
     std::size_t next_name = 0;
-    for (const CLI::Option* option : app.parse_order()) {
+    for (const Option& option : line.given_in_order()) {
       Isa isa = Isa::reference;
-      if (option == options->named) {
-        isa = parse_isa(options->named->results().at(next_name++));
-      } else if (option != options->reference) {
+      if (option == named) {
+        isa = parse_isa(names.at(next_name++));
+      } else if (!(option == reference)) {
         continue;
       }
       if (std::find(given.begin(), given.end(), isa) != given.end()) {
@@ -71,13 +68,10 @@ void add_isa_list_options(CLI::App& app, std::vector<Isa>& isas, const std::stri
     }
     isas = std::move(given);
   };
-  options->named =
-      app.add_option_function<std::vector<std::string>>(
-             "--isa", [collect](const std::vector<std::string>&) { collect(); }, isa_description)
-          ->type_name("NAME:" + supported_isa_names())
-          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-          ->allow_extra_args(false);
-  options->reference = app.add_flag_callback("--reference", collect, reference_description);
+  line.add_values(
+          "--isa", [collect](const std::vector<std::string>&) { collect(); }, isa_description)
+      .type_name("NAME:" + supported_isa_names());
+  line.add_flag("--reference", collect, reference_description);
 }
 
 Isa tool_isa(std::optional<Isa> requested) {

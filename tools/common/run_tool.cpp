@@ -1,5 +1,7 @@
 #include "common/run_tool.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -35,7 +37,7 @@ std::string standard_output_failure() {
 }  // namespace
 
 int run_tool(int argc, char** argv, const std::string& name, std::vector<std::string> usage,
-             const std::function<ToolWork(CLI::App&)>& configure) {
+             const std::function<ToolWork(CommandLine&)>& configure) {
   const auto finished = [&name](int status) {
     const std::string output_failure = standard_output_failure();
     return output_failure.empty() ? status : report(name, output_failure, false);
@@ -43,7 +45,8 @@ int run_tool(int argc, char** argv, const std::string& name, std::vector<std::st
   try {
     CLI::App app("", name);
     apply_tool_conventions(app, std::move(usage));
-    const ToolWork work = configure(app);
+    CommandLine line(app);
+    const ToolWork work = configure(line);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {

@@ -1,4 +1,4 @@
-// A tool's main(): makes its CLI11 App (tool_app.hpp's conventions), lets `configure` add the
+// A tool's main(): makes its command line (tool_app.hpp's conventions), lets `configure` add the
 // options, parses the command line, then runs the work `configure` returned.
 //
 //   --help                        CLI11's help on standard output; exit status 0
@@ -10,11 +10,11 @@
 //   otherwise                     the work's exit status
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "common/command_line.hpp"
 
 namespace edgewise::tools {
 
@@ -22,6 +22,6 @@ using ToolWork = std::function<int()>;
 
 // `name` is the tool's ("edgewise-coverage"); `usage` holds the usage lines after it.
 int run_tool(int argc, char** argv, const std::string& name, std::vector<std::string> usage,
-             const std::function<ToolWork(CLI::App&)>& configure);
+             const std::function<ToolWork(CommandLine&)>& configure);
 
 }  // namespace edgewise::tools

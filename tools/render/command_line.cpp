@@ -41,13 +41,13 @@ Vec3 parse_vector(std::string_view option, std::string_view text) {
   return {xyz[0], xyz[1], xyz[2]};
 }
 
-CLI::Option* add_vector_option(CLI::App& app, const std::string& name, std::optional<Vec3>& value,
-                               const std::string& description) {
+tools::Option add_vector_option(tools::CommandLine& command_line, const std::string& name,
+                                std::optional<Vec3>& value, const std::string& description) {
   return tools::add_parsed_option(
-             app, name, value,
+             command_line, name, value,
              [name](const std::string& text) { return std::optional(parse_vector(name, text)); },
              description)
-      ->type_name("X,Y,Z");
+      .type_name("X,Y,Z");
 }
 
 std::int32_t parse_side(std::string_view text, bool& ok) {
@@ -80,13 +80,14 @@ float parse_budget(const std::string& option, const std::string& text) {
   return budget;
 }
 
-void add_camera_options(CLI::App& app, CameraOverrides& camera) {
-  add_vector_option(app, "--eye", camera.eye, "where the camera is")->group(kCameraGroup);
-  add_vector_option(app, "--target", camera.target, "the point it looks at")->group(kCameraGroup);
-  add_vector_option(app, "--up", camera.up, "the direction that is up on screen")
-      ->group(kCameraGroup);
+void add_camera_options(tools::CommandLine& command_line, CameraOverrides& camera) {
+  add_vector_option(command_line, "--eye", camera.eye, "where the camera is").group(kCameraGroup);
+  add_vector_option(command_line, "--target", camera.target, "the point it looks at")
+      .group(kCameraGroup);
+  add_vector_option(command_line, "--up", camera.up, "the direction that is up on screen")
+      .group(kCameraGroup);
   tools::add_parsed_option(
-      app, "--fov", camera.fov_degrees,
+      command_line, "--fov", camera.fov_degrees,
       [](const std::string& text) {
         const float fov = tools::finite_number("--fov", text);
         if (!(fov > 0.0f && fov < 180.0f)) {
@@ -95,80 +96,85 @@ void add_camera_options(CLI::App& app, CameraOverrides& camera) {
         return std::optional(fov);
       },
       "vertical field of view, in (0, 180)")
-      ->type_name("DEGREES")
-      ->group(kCameraGroup);
+      .type_name("DEGREES")
+      .group(kCameraGroup);
   const auto distance = [](const char* option) {
     return [option](const std::string& text) {
       return std::optional(tools::finite_number(option, text));
     };
   };
-  tools::add_parsed_option(app, "--near", camera.near_plane, distance("--near"),
+  tools::add_parsed_option(command_line, "--near", camera.near_plane, distance("--near"),
                            "clip distance along the view direction")
-      ->type_name("N")
-      ->group(kCameraGroup);
-  tools::add_parsed_option(app, "--far", camera.far_plane, distance("--far"),
+      .type_name("N")
+      .group(kCameraGroup);
+  tools::add_parsed_option(command_line, "--far", camera.far_plane, distance("--far"),
                            "clip distance along the view direction")
-      ->type_name("F")
-      ->group(kCameraGroup);
-  app.add_flag("--ortho", camera.orthographic,
-               "orthographic: shows at every depth what the perspective camera\n"
-               "shows at the target's distance; near and far hold the scene")
-      ->group(kCameraGroup);
+      .type_name("F")
+      .group(kCameraGroup);
+  command_line
+      .add_flag("--ortho", camera.orthographic,
+                "orthographic: shows at every depth what the perspective camera\n"
+                "shows at the target's distance; near and far hold the scene")
+      .group(kCameraGroup);
 }
 
-void add_pipeline_options(CLI::App& app, RenderCommandLine& line) {
+void add_pipeline_options(tools::CommandLine& command_line, RenderCommandLine& line) {
   RenderSettings& settings = line.settings;
   DrawOptions& draw = settings.draw;
-  app.add_option_function<std::string>(
-         "--size", [&settings](const std::string& text) { parse_size(text, settings); },
-         "default 1280x720")
-      ->type_name("WxH")
-      ->group(kPipelineGroup);
-  tools::add_enum_option(app, "--method", draw.interpolation,
+  command_line
+      .add_value(
+          "--size", [&settings](const std::string& text) { parse_size(text, settings); },
+          "default 1280x720")
+      .type_name("WxH")
+      .group(kPipelineGroup);
+  tools::add_enum_option(command_line, "--method", draw.interpolation,
                          "attribute interpolation method (default plane_equations)")
-      ->group(kPipelineGroup);
-  tools::add_enum_option(app, "--perspective", draw.perspective,
+      .group(kPipelineGroup);
+  tools::add_enum_option(command_line, "--perspective", draw.perspective,
                          "attribute interpolation (default correct)")
-      ->group(kPipelineGroup);
-  tools::add_enum_option(app, "--shading", draw.shading, "(default diffuse)")
-      ->group(kPipelineGroup);
-  tools::add_enum_option(app, "--depth-test", draw.depth_test,
+      .group(kPipelineGroup);
+  tools::add_enum_option(command_line, "--shading", draw.shading, "(default diffuse)")
+      .group(kPipelineGroup);
+  tools::add_enum_option(command_line, "--depth-test", draw.depth_test,
                          "(default less; the depth buffer is cleared to 0 for\n"
                          "greater, to 1 otherwise)")
-      ->group(kPipelineGroup);
-  app.add_flag_callback(
-         "--no-depth-write", [&draw] { draw.depth_write = false; },
-         "leave the depth buffer as it is")
-      ->group(kPipelineGroup);
-  tools::add_named_option(
-      app, "--cull", draw.cull, {CullMode::none, CullMode::clockwise, CullMode::counter_clockwise},
-      cull_mode_name, "winding on screen to remove (default cw: the back faces)")
-      ->group(kPipelineGroup);
+      .group(kPipelineGroup);
+  command_line
+      .add_flag(
+          "--no-depth-write", [&draw] { draw.depth_write = false; },
+          "leave the depth buffer as it is")
+      .group(kPipelineGroup);
+  tools::add_named_option(command_line, "--cull", draw.cull,
+                          {CullMode::none, CullMode::clockwise, CullMode::counter_clockwise},
+                          cull_mode_name,
+                          "winding on screen to remove (default cw: the back faces)")
+      .group(kPipelineGroup);
   tools::add_parsed_option(
-      app, "--light", draw.light_direction,
+      command_line, "--light", draw.light_direction,
       [](const std::string& text) { return parse_vector("--light", text); },
       "direction towards the light, world space (0,0,0: ambient only)")
-      ->type_name("X,Y,Z")
-      ->group(kPipelineGroup);
+      .type_name("X,Y,Z")
+      .group(kPipelineGroup);
   tools::add_parsed_option(
-      app, "--error-budget", draw.error_budget,
+      command_line, "--error-budget", draw.error_budget,
       [](const std::string& text) { return std::optional(parse_budget("--error-budget", text)); },
       "the largest difference from the exact methods' colour, in\n"
       "linear units (1/255 = 0.00392: one 8-bit code); draw() then\n"
       "shades a triangle or a textured tile in one colour where its\n"
       "bound allows (default: exact everywhere)")
-      ->type_name("B")
-      ->group(kPipelineGroup);
-  tools::add_isa_options(app, line.isa, "default: the best ISA of this CPU (or EDGEWISE_ISA)",
+      .type_name("B")
+      .group(kPipelineGroup);
+  tools::add_isa_options(command_line, line.isa,
+                         "default: the best ISA of this CPU (or EDGEWISE_ISA)",
                          "the scalar reference");
-  app.get_option("--isa")->group(kPipelineGroup);
-  app.get_option("--reference")->group(kPipelineGroup);
+  command_line.option("--isa").group(kPipelineGroup);
+  command_line.option("--reference").group(kPipelineGroup);
 }
 
-void add_texture_options(CLI::App& app, RenderCommandLine& line) {
+void add_texture_options(tools::CommandLine& command_line, RenderCommandLine& line) {
   TextureSettings& texture = line.texture;
   tools::add_parsed_option(
-      app, "--texture", line.texture_source,
+      command_line, "--texture", line.texture_source,
       [](const std::string& text) {
         if (text.empty()) throw UsageError("--texture needs a file name or checker");
         return std::optional(text);
@@ -178,33 +184,35 @@ void add_texture_options(CLI::App& app, RenderCommandLine& line) {
       "texels, 8x8 squares). The mesh's uvs address it (an OBJ file needs\n"
       "vt lines) and its vertex colours become white: the texture gives\n"
       "the colour, which shading (flat, gouraud, diffuse) still scales")
-      ->type_name("FILE|checker")
-      ->group(kTextureGroup);
-  tools::add_filter_option(app, texture.sampler.filter,
+      .type_name("FILE|checker")
+      .group(kTextureGroup);
+  tools::add_filter_option(command_line, texture.sampler.filter,
                            "(default trilinear; ripmaps and the summed-area table are\n"
                            "built only for their filter)")
-      ->group(kTextureGroup);
-  app.add_flag("--each-filter", texture.each_filter,
-               "one run per filter in the order above (--repeat frames each) and a\n"
-               "table of their times; -o FILE.png writes FILE-<filter>.png")
-      ->group(kTextureGroup);
-  tools::add_sampler_options(app, texture.sampler);
-  tools::add_pyramid_option(app, texture.pyramid, "how coarser levels are made (default box)");
-  app.add_flag("--srgb", texture.srgb,
-               "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
-               "others when loaded; alpha is linear");
-  tools::add_mebibytes_option(app, "--max-texture-mb", texture.limits.max_texture_bytes,
+      .group(kTextureGroup);
+  command_line
+      .add_flag("--each-filter", texture.each_filter,
+                "one run per filter in the order above (--repeat frames each) and a\n"
+                "table of their times; -o FILE.png writes FILE-<filter>.png")
+      .group(kTextureGroup);
+  tools::add_sampler_options(command_line, texture.sampler);
+  tools::add_pyramid_option(command_line, texture.pyramid,
+                            "how coarser levels are made (default box)");
+  command_line.add_flag("--srgb", texture.srgb,
+                        "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
+                        "others when loaded; alpha is linear");
+  tools::add_mebibytes_option(command_line, "--max-texture-mb", texture.limits.max_texture_bytes,
                               "refuse an image file whose texels would take more than MB MiB\n"
                               "as a texture (read from its header, before any pixel; default " +
                                   std::to_string(texture_io::kDefaultMaxTextureBytes >> 20) + ")")
-      ->group(kTextureGroup);
-  tools::add_enum_option(app, "--derivatives", texture.derivatives,
+      .group(kTextureGroup);
+  tools::add_enum_option(command_line, "--derivatives", texture.derivatives,
                          "the sampler's screen derivatives of (s, t): differences in\n"
                          "2x2 pixel quads, as GPUs take them (default), or exact, from the\n"
                          "plane equations");
   for (const char* name : {"--wrap", "--lod", "--lod-bias", "--max-aniso", "--taps", "--pyramid",
                            "--srgb", "--derivatives"}) {
-    app.get_option(name)->group(kTextureGroup);
+    command_line.option(name).group(kTextureGroup);
   }
 }
 
@@ -218,9 +226,9 @@ AntiAliasing anti_aliasing_of(const std::string& name) {
   return aa;
 }
 
-void add_anti_aliasing_options(CLI::App& app, AntiAliasing& aa) {
+void add_anti_aliasing_options(tools::CommandLine& command_line, AntiAliasing& aa) {
   tools::add_choice_option(
-      app, "--aa",
+      command_line, "--aa",
       std::vector<std::string>(std::begin(kAntiAliasingNames), std::end(kAntiAliasingNames)),
       [&aa](std::size_t i) {
         const ResolveOptions resolve = aa.resolve;
@@ -231,42 +239,43 @@ void add_anti_aliasing_options(CLI::App& app, AntiAliasing& aa) {
       "anti-aliasing: msaaN draws into a target of N samples per pixel\n"
       "(shaded once per pixel), ssaaN at N times the size per axis\n"
       "(shaded per sample); both resolved by --resolve (default none)")
-      ->group(kPipelineGroup);
-  tools::add_enum_option(app, "--resolve", aa.resolve.filter,
+      .group(kPipelineGroup);
+  tools::add_enum_option(command_line, "--resolve", aa.resolve.filter,
                          "the resolve filter of --aa, in linear light: box (the pixel's\n"
                          "samples), tent (radius 1 px) or mitchell (radius 2 px)")
-      ->group(kPipelineGroup);
+      .group(kPipelineGroup);
 }
 
-void add_running_options(CLI::App& app, RenderSettings& settings) {
-  tools::add_integer_option(app, "--repeat", settings.repeat, 1, kMaxRepeat,
+void add_running_options(tools::CommandLine& command_line, RenderSettings& settings) {
+  tools::add_integer_option(command_line, "--repeat", settings.repeat, 1, kMaxRepeat,
                             "draw N times into the same framebuffer, report median times")
-      ->group(kRunningGroup);
+      .group(kRunningGroup);
   tools::add_parsed_option(
-      app, "-o", settings.output,
+      command_line, "-o", settings.output,
       [](const std::string& path) {
         image_format_for(path);  // refuse an unknown extension before any work
         return std::optional(path);
       },
       "write FILE.png (RGBA8) or FILE.exr (float R, G, B, A and the\n"
       "depth buffer as channel Z)")
-      ->type_name("FILE")
-      ->group(kRunningGroup);
-  app.add_flag("--compare-isas", settings.compare_isas,
-               "render with the reference once and with every supported ISA\n"
-               "(--repeat times); report depth mismatches and colour differences;\n"
-               "exit status 1 if any depth value or count differs")
-      ->group(kRunningGroup);
+      .type_name("FILE")
+      .group(kRunningGroup);
+  command_line
+      .add_flag("--compare-isas", settings.compare_isas,
+                "render with the reference once and with every supported ISA\n"
+                "(--repeat times); report depth mismatches and colour differences;\n"
+                "exit status 1 if any depth value or count differs")
+      .group(kRunningGroup);
   tools::add_parsed_option(
-      app, "--compare-budget", settings.compare_budget,
+      command_line, "--compare-budget", settings.compare_budget,
       [](const std::string& text) { return std::optional(parse_budget("--compare-budget", text)); },
       "render --repeat frames without and --repeat with --error-budget B,\n"
       "interleaved; report both median frame times, the constant\n"
       "fragments and the largest difference between the last two images;\n"
       "exit status 1 if it exceeds floor(255 B) codes or any depth value\n"
       "or count differs; -o FILE.png writes FILE-exact.png, FILE-budget.png")
-      ->type_name("B")
-      ->group(kRunningGroup);
+      .type_name("B")
+      .group(kRunningGroup);
 }
 
 }  // namespace
@@ -287,26 +296,29 @@ std::vector<std::string> usage_lines() {
   return {"[--obj FILE | --scene default|sphere|torus|ground] [options]"};
 }
 
-void add_options(CLI::App& app, RenderCommandLine& line) {
+void add_options(tools::CommandLine& command_line, RenderCommandLine& line) {
   RenderSettings& settings = line.settings;
-  app.description(
+  command_line.description(
       "Renders a mesh with edgewise::draw() and prints the pipeline's counts and stage times.");
-  app.add_option("--obj", settings.obj_path, "the mesh to draw, an OBJ file")->type_name("FILE");
+  tools::add_parsed_option(
+      command_line, "--obj", settings.obj_path,
+      [](const std::string& path) { return std::optional(path); }, "the mesh to draw, an OBJ file")
+      .type_name("FILE");
   std::vector<std::string> scenes(std::begin(kBuiltinSceneNames), std::end(kBuiltinSceneNames));
   tools::add_named_option(
-      app, "--scene", settings.scene_name, scenes, [](const std::string& name) { return name; },
-      "a built-in scene (default default)");
-  add_camera_options(app, settings.camera);
-  add_pipeline_options(app, line);
-  add_anti_aliasing_options(app, settings.aa);
-  add_texture_options(app, line);
-  add_running_options(app, settings);
+      command_line, "--scene", settings.scene_name, scenes,
+      [](const std::string& name) { return name; }, "a built-in scene (default default)");
+  add_camera_options(command_line, settings.camera);
+  add_pipeline_options(command_line, line);
+  add_anti_aliasing_options(command_line, settings.aa);
+  add_texture_options(command_line, line);
+  add_running_options(command_line, settings);
 }
 
-RenderSettings checked_settings(const CLI::App& app, RenderCommandLine line) {
+RenderSettings checked_settings(const tools::CommandLine& command_line, RenderCommandLine line) {
   RenderSettings settings = std::move(line.settings);
   settings.draw.isa = line.isa;
-  if (settings.obj_path && app.count("--scene") > 0) {
+  if (settings.obj_path && command_line.count("--scene") > 0) {
     throw UsageError("give either --obj or --scene, not both");
   }
   if (settings.compare_isas && (line.isa || settings.output || line.texture.each_filter)) {
@@ -317,7 +329,7 @@ RenderSettings checked_settings(const CLI::App& app, RenderCommandLine line) {
     throw UsageError(
         "--compare-budget takes no --compare-isas, --each-filter, --aa or --error-budget");
   }
-  if (app.count("--resolve") > 0 && !settings.aa.enabled()) {
+  if (command_line.count("--resolve") > 0 && !settings.aa.enabled()) {
     throw UsageError("--resolve needs --aa msaaN or ssaaN");
   }
   if (line.texture.each_filter && settings.aa.enabled()) {
@@ -336,14 +348,14 @@ RenderSettings checked_settings(const CLI::App& app, RenderCommandLine line) {
   }
   if (!line.texture_source) {
     // The first option given that needs --texture.
-    for (const CLI::Option* option : app.parse_order()) {
-      if (option->get_group() == kTextureGroup) {
-        throw UsageError(option->get_name() + " needs --texture FILE|checker");
+    for (const tools::Option& option : command_line.given_in_order()) {
+      if (option.group_name() == kTextureGroup) {
+        throw UsageError(option.name() + " needs --texture FILE|checker");
       }
     }
     return settings;
   }
-  if (line.texture.each_filter && app.count("--filter") > 0) {
+  if (line.texture.each_filter && command_line.count("--filter") > 0) {
     throw UsageError("--each-filter renders every filter; give no --filter");
   }
   line.texture.source = std::move(*line.texture_source);

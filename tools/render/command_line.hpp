@@ -1,9 +1,7 @@
-// edgewise-render's command line (CLI11): every option parsed and range-checked up front, so that
+// edgewise-render's command line: every option parsed and range-checked up front, so that
 // a typo costs no loading or rendering. Mistakes throw UsageError (common/usage_error.hpp) naming
 // the option and the value.
 #pragma once
-
-#include <CLI/CLI.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -11,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/command_line.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/resolve.hpp"
@@ -94,7 +93,8 @@ inline constexpr int kMaxRepeat = 10000;
 // (16384 x 16384) the tool refuses, rather than let the system's out-of-memory killer decide.
 inline constexpr std::int64_t kMaxPixels = std::int64_t{1} << 28;
 
-// What the options fill in as CLI11 parses them; checked_settings() makes the settings of it.
+// What the options fill in as the command line is parsed; checked_settings() makes the settings of
+// it.
 struct RenderCommandLine {
   RenderSettings settings;
   std::optional<Isa> isa;                     // --isa or --reference
@@ -104,11 +104,11 @@ struct RenderCommandLine {
 
 // The usage lines after the tool's name, for --help.
 std::vector<std::string> usage_lines();
-// Adds edgewise-render's options to `app`; they fill `line` when it parses.
-void add_options(CLI::App& app, RenderCommandLine& line);
-// The settings, once `app` has parsed the command line into `line`. Throws UsageError for options
-// that do not go together.
-RenderSettings checked_settings(const CLI::App& app, RenderCommandLine line);
+// Adds edgewise-render's options to `command_line`; they fill `line` when it parses.
+void add_options(tools::CommandLine& command_line, RenderCommandLine& line);
+// The settings, once `command_line` has parsed the command line into `line`. Throws UsageError for
+// options that do not go together.
+RenderSettings checked_settings(const tools::CommandLine& command_line, RenderCommandLine line);
 
 std::string_view cull_mode_name(CullMode mode);
 

@@ -29,11 +29,11 @@ constexpr const char* kFooter =
     "the command line. Errors are one line on standard error.";
 
 // --wrap-s or --wrap-t: one axis, over --wrap.
-void add_axis_wrap_option(CLI::App& app, const std::string& name, WrapMode& wrap,
+void add_axis_wrap_option(tools::CommandLine& command_line, const std::string& name, WrapMode& wrap,
                           const std::string& description) {
   const std::span<const WrapMode> modes = values_of<WrapMode>();
   tools::add_named_option(
-      app, name, wrap, std::vector<WrapMode>(modes.begin(), modes.end()),
+      command_line, name, wrap, std::vector<WrapMode>(modes.begin(), modes.end()),
       [](WrapMode mode) { return name_of(mode); }, description);
 }
 
@@ -43,36 +43,40 @@ std::vector<std::string> usage_lines() {
   return {"--texture IMG --filter NAME --queries Q --out R [options]"};
 }
 
-void add_options(CLI::App& app, SampleSettings& settings) {
-  app.description(
+void add_options(tools::CommandLine& command_line, SampleSettings& settings) {
+  command_line.description(
       "Samples the texture IMG with edgewise::sample() at every query of Q and writes the\n"
       "filtered colours to R; prints the texture, the sampler and the sampling speed.");
-  app.footer(kFooter);
-  app.add_option("--texture", settings.texture_path, "the texture, an image file")
-      ->type_name("IMG")
-      ->required();
-  tools::add_filter_option(app, settings.sampler.filter,
+  command_line.footer(kFooter);
+  tools::add_text_option(command_line, "--texture", settings.texture_path,
+                         "the texture, an image file")
+      .type_name("IMG")
+      .required();
+  tools::add_filter_option(command_line, settings.sampler.filter,
                            "ripmaps and the summed-area table are built only for their filter")
-      ->required();
-  app.add_option("--queries", settings.queries_path, "the queries, a binary file")
-      ->type_name("Q")
-      ->required();
-  app.add_option("--out", settings.output_path, "the results, a binary file")
-      ->type_name("R")
-      ->required();
+      .required();
+  tools::add_text_option(command_line, "--queries", settings.queries_path,
+                         "the queries, a binary file")
+      .type_name("Q")
+      .required();
+  tools::add_text_option(command_line, "--out", settings.output_path, "the results, a binary file")
+      .type_name("R")
+      .required();
   // Defined after --wrap: their values are stored over its.
-  tools::add_sampler_options(app, settings.sampler);
-  add_axis_wrap_option(app, "--wrap-s", settings.sampler.wrap_s, "s (across), over --wrap");
-  add_axis_wrap_option(app, "--wrap-t", settings.sampler.wrap_t, "t (down), over --wrap");
-  tools::add_pyramid_option(app, settings.pyramid, "how coarser levels are made (default box)");
-  app.add_flag("--srgb", settings.srgb,
-               "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
-               "others when loaded (clamped to [0, 1] first); alpha is linear");
-  tools::add_mebibytes_option(app, "--max-texture-mb", settings.limits.max_texture_bytes,
+  tools::add_sampler_options(command_line, settings.sampler);
+  add_axis_wrap_option(command_line, "--wrap-s", settings.sampler.wrap_s,
+                       "s (across), over --wrap");
+  add_axis_wrap_option(command_line, "--wrap-t", settings.sampler.wrap_t, "t (down), over --wrap");
+  tools::add_pyramid_option(command_line, settings.pyramid,
+                            "how coarser levels are made (default box)");
+  command_line.add_flag("--srgb", settings.srgb,
+                        "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
+                        "others when loaded (clamped to [0, 1] first); alpha is linear");
+  tools::add_mebibytes_option(command_line, "--max-texture-mb", settings.limits.max_texture_bytes,
                               "refuse an image whose texels would take more than MB MiB as a\n"
                               "texture (read from its header, before any pixel; default " +
                                   std::to_string(texture_io::kDefaultMaxTextureBytes >> 20) + ")");
-  tools::add_isa_options(app, settings.isa,
+  tools::add_isa_options(command_line, settings.isa,
                          "the kernel (default: the best ISA of this CPU, or EDGEWISE_ISA)",
                          "the scalar double-precision reference kernel");
 }

@@ -1,13 +1,12 @@
-// edgewise-sample's command line (CLI11): every option parsed and range-checked before any file
+// edgewise-sample's command line: every option parsed and range-checked before any file
 // is touched. Mistakes throw UsageError (common/usage_error.hpp) naming the option and the value.
 #pragma once
-
-#include <CLI/CLI.hpp>
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "common/command_line.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
@@ -28,8 +27,8 @@ struct SampleSettings {
 
 // The usage lines after the tool's name, for --help.
 std::vector<std::string> usage_lines();
-// Adds edgewise-sample's options to `app`; they fill `settings` when it parses (--wrap-s and
-// --wrap-t win over --wrap wherever they stand).
-void add_options(CLI::App& app, SampleSettings& settings);
+// Adds edgewise-sample's options to `command_line`; they fill `settings` when it parses
+// (--wrap-s and --wrap-t win over --wrap wherever they stand).
+void add_options(tools::CommandLine& command_line, SampleSettings& settings);
 
 }  // namespace edgewise::sample_tool

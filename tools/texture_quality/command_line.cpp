@@ -54,38 +54,40 @@ void parse_size(std::string_view text, std::int32_t& width, std::int32_t& height
 
 // One of `all` by the name `name_of_value` gives it, or "all" (the whole list), into `chosen`.
 template <class T, std::size_t N, class NameOf>
-CLI::Option* add_scene_option(CLI::App& app, const std::string& name, std::vector<T>& chosen,
-                              const T (&all)[N], NameOf name_of_value,
-                              const std::string& description) {
+tools::Option add_scene_option(tools::CommandLine& command_line, const std::string& name,
+                               std::vector<T>& chosen, const T (&all)[N], NameOf name_of_value,
+                               const std::string& description) {
   std::vector<std::string> names;
   for (const T& value : all)
     names.emplace_back(name_of_value(value));
   names.emplace_back("all");
   return tools::add_choice_option(
-      app, name, std::move(names),
+      command_line, name, std::move(names),
       [&chosen, &all](std::size_t i) {
         chosen = i < N ? std::vector<T>{all[i]} : std::vector<T>(std::begin(all), std::end(all));
       },
       description);
 }
 
-void add_scene_options(CLI::App& app, QualitySettings& settings) {
-  add_scene_option(app, "--texture", settings.textures, kSceneTextures, scene_texture_name,
+void add_scene_options(tools::CommandLine& command_line, QualitySettings& settings) {
+  add_scene_option(command_line, "--texture", settings.textures, kSceneTextures, scene_texture_name,
                    "checkerboard (16-texel squares), sinusoids or all (default all)")
-      ->group(kScenesGroup);
-  add_scene_option(app, "--view", settings.views, kSceneViews, scene_view_name, "(default all)")
-      ->group(kScenesGroup);
-  app.add_option_function<std::string>(
-         "--size",
-         [&settings](const std::string& text) {
-           parse_size(text, settings.width, settings.height);
-         },
-         "the screen (default 480x270; at most 4096x4096 pixels in all)")
-      ->type_name("WxH")
-      ->group(kScenesGroup);
+      .group(kScenesGroup);
+  add_scene_option(command_line, "--view", settings.views, kSceneViews, scene_view_name,
+                   "(default all)")
+      .group(kScenesGroup);
+  command_line
+      .add_value(
+          "--size",
+          [&settings](const std::string& text) {
+            parse_size(text, settings.width, settings.height);
+          },
+          "the screen (default 480x270; at most 4096x4096 pixels in all)")
+      .type_name("WxH")
+      .group(kScenesGroup);
   constexpr int kMultiple = 2 * kCheckerSquareTexels;
   tools::add_parsed_option(
-      app, "--texture-size", settings.texture_size,
+      command_line, "--texture-size", settings.texture_size,
       [](const std::string& text) {
         const auto size = static_cast<std::int32_t>(
             tools::integer_in("--texture-size", text, kMultiple, 1 << 15));
@@ -96,83 +98,84 @@ void add_scene_options(CLI::App& app, QualitySettings& settings) {
         return size;
       },
       "the textures' N x N texels, a multiple of " + std::to_string(kMultiple) + " (default 1024)")
-      ->type_name("N")
-      ->group(kScenesGroup);
-  tools::add_pyramid_option(app, settings.pyramid,
+      .type_name("N")
+      .group(kScenesGroup);
+  tools::add_pyramid_option(command_line, settings.pyramid,
                             "how the mipmaps and ripmaps are made (default box)")
-      ->group(kScenesGroup);
+      .group(kScenesGroup);
 }
 
-void add_method_options(CLI::App& app, QualitySettings& settings) {
+void add_method_options(tools::CommandLine& command_line, QualitySettings& settings) {
   MethodSettings& methods = settings.methods;
   std::vector<std::string> filter_names;
   for (TextureFilter filter : values_of<TextureFilter>())
     filter_names.emplace_back(name_of(filter));
-  app.add_option_function<std::vector<std::string>>(
-         "--filter",
-         [&filters = methods.filters](const std::vector<std::string>& names) {
-           for (const std::string& name : names) {
-             const TextureFilter filter = *parse_name<TextureFilter>(name);
-             if (std::find(filters.begin(), filters.end(), filter) != filters.end()) {
-               throw UsageError("filter " + tools::quoted(name) + " given twice");
-             }
-             filters.push_back(filter);
-           }
-         },
-         "score this filter (repeatable; default every filter)")
-      ->type_name("NAME")
-      ->check(tools::one_of("--filter", filter_names))
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-      ->allow_extra_args(false)
-      ->group(kMethodsGroup);
-  tools::add_max_aniso_option(app, methods.max_anisotropy)->group(kMethodsGroup);
-  tools::add_lod_option(app, methods.lod)->group(kMethodsGroup);
-  tools::add_lod_bias_option(app, methods.lod_bias,
+  command_line
+      .add_values(
+          "--filter",
+          [&filters = methods.filters](const std::vector<std::string>& names) {
+            for (const std::string& name : names) {
+              const TextureFilter filter = *parse_name<TextureFilter>(name);
+              if (std::find(filters.begin(), filters.end(), filter) != filters.end()) {
+                throw UsageError("filter " + tools::quoted(name) + " given twice");
+              }
+              filters.push_back(filter);
+            }
+          },
+          "score this filter (repeatable; default every filter)")
+      .type_name("NAME")
+      .one_of(filter_names)
+      .group(kMethodsGroup);
+  tools::add_max_aniso_option(command_line, methods.max_anisotropy).group(kMethodsGroup);
+  tools::add_lod_option(command_line, methods.lod).group(kMethodsGroup);
+  tools::add_lod_bias_option(command_line, methods.lod_bias,
                              "added to the level of detail (default 0); the methods\n"
                              "that read a formula or bias other than the default name it:\n"
                              "trilinear_max_axis_bias-0.5")
-      ->group(kMethodsGroup);
-  tools::add_isa_list_options(app, settings.isas,
+      .group(kMethodsGroup);
+  tools::add_isa_list_options(command_line, settings.isas,
                               "the kernel (repeatable; default: the best ISA of this CPU, or\n"
                               "EDGEWISE_ISA)",
                               "the scalar double-precision reference (with or without --isa)");
-  app.get_option("--isa")->group(kMethodsGroup);
-  app.get_option("--reference")->group(kMethodsGroup);
-  app.add_flag_callback(
-         "--no-peer", [&settings] { settings.peer = false; },
-         "leave OpenImageIO's TextureSystem out")
-      ->group(kMethodsGroup);
-  app.add_flag("--draw", settings.draw,
-               "also draw each view with draw() (its mesh textured with each\n"
-               "method, white flat shading) with derivatives from 2x2 quads and\n"
-               "from the planes: methods draw_quad_<name>, draw_analytic_<name>;\n"
-               "8-bit framebuffer, so errors include its rounding (59 dB alone)")
-      ->group(kMethodsGroup);
-  tools::add_integer_option(app, "--repeat", settings.repetitions, 1, kMaxRepetitions,
+  command_line.option("--isa").group(kMethodsGroup);
+  command_line.option("--reference").group(kMethodsGroup);
+  command_line
+      .add_flag(
+          "--no-peer", [&settings] { settings.peer = false; },
+          "leave OpenImageIO's TextureSystem out")
+      .group(kMethodsGroup);
+  command_line
+      .add_flag("--draw", settings.draw,
+                "also draw each view with draw() (its mesh textured with each\n"
+                "method, white flat shading) with derivatives from 2x2 quads and\n"
+                "from the planes: methods draw_quad_<name>, draw_analytic_<name>;\n"
+                "8-bit framebuffer, so errors include its rounding (59 dB alone)")
+      .group(kMethodsGroup);
+  tools::add_integer_option(command_line, "--repeat", settings.repetitions, 1, kMaxRepetitions,
                             "timed runs per method, the median kept: 1.." +
                                 std::to_string(kMaxRepetitions) + " (default 5)")
-      ->group(kMethodsGroup);
+      .group(kMethodsGroup);
 }
 
-void add_file_options(CLI::App& app, QualitySettings& settings) {
-  tools::add_path_option(app, "--cache", settings.cache_directory,
+void add_file_options(tools::CommandLine& command_line, QualitySettings& settings) {
+  tools::add_path_option(command_line, "--cache", settings.cache_directory,
                          "where ground truths are kept, one file per texture, view and size\n"
                          "(default $XDG_CACHE_HOME/edgewise or ~/.cache/edgewise). Computing\n"
                          "one is slow: about 80 s of CPU for the checkerboard ground plane at\n"
                          "480x270, 4.5 min at 1920x1080.")
-      ->type_name("DIR")
-      ->group(kFilesGroup);
-  tools::add_path_option(app, "--csv", settings.csv_path,
+      .type_name("DIR")
+      .group(kFilesGroup);
+  tools::add_path_option(command_line, "--csv", settings.csv_path,
                          "the scores, one row per texture, view, method and ISA:\n"
                          "texture,view,size,method,isa,rmse,psnr_db,worst,ns_per_sample,pareto")
-      ->type_name("FILE")
-      ->group(kFilesGroup);
-  tools::add_path_option(app, "--images", settings.images_directory,
+      .type_name("FILE")
+      .group(kFilesGroup);
+  tools::add_path_option(command_line, "--images", settings.images_directory,
                          "PNGs of the ground truth, of each method's result and of its\n"
                          "absolute error times 8: linear values clamped to [0, 1] and written\n"
                          "sRGB-encoded (8-bit) for viewing")
-      ->type_name("DIR")
-      ->group(kFilesGroup);
+      .type_name("DIR")
+      .group(kFilesGroup);
 }
 
 }  // namespace
@@ -181,12 +184,12 @@ std::vector<std::string> usage_lines() {
   return {"[options]"};
 }
 
-void add_options(CLI::App& app, QualitySettings& settings) {
-  app.description(kDescription);
-  app.footer(kFooter);
-  add_scene_options(app, settings);
-  add_method_options(app, settings);
-  add_file_options(app, settings);
+void add_options(tools::CommandLine& command_line, QualitySettings& settings) {
+  command_line.description(kDescription);
+  command_line.footer(kFooter);
+  add_scene_options(command_line, settings);
+  add_method_options(command_line, settings);
+  add_file_options(command_line, settings);
 }
 
 std::vector<Isa> resolve_isas(const QualitySettings& settings) {

@@ -1,15 +1,14 @@
-// edgewise-texture-quality's command line (CLI11): every option parsed and range-checked before
+// edgewise-texture-quality's command line: every option parsed and range-checked before
 // any texture is built or ground truth computed. Mistakes throw UsageError
 // (common/usage_error.hpp) naming the option and the value.
 #pragma once
-
-#include <CLI/CLI.hpp>
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "common/command_line.hpp"
 #include "edgewise/isa.hpp"
 #include "edgewise/texture.hpp"
 #include "texture_quality/filter_methods.hpp"
@@ -42,8 +41,8 @@ struct QualitySettings {
 
 // The usage lines after the tool's name, for --help.
 std::vector<std::string> usage_lines();
-// Adds edgewise-texture-quality's options to `app`; they fill `settings` when it parses.
-void add_options(CLI::App& app, QualitySettings& settings);
+// Adds edgewise-texture-quality's options to `command_line`; they fill `settings` when it parses.
+void add_options(tools::CommandLine& command_line, QualitySettings& settings);
 
 // The ISAs to run, in the order given: those named on the command line, or active_isa(). Throws
 // UsageError when EDGEWISE_ISA names an ISA this machine cannot run.
