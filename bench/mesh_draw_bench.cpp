@@ -4,10 +4,18 @@
 // ISA. One iteration is one draw() call of the whole mesh into a 1920x1080 target cleared before
 // it with the timer paused. Counters: triangles (of the mesh), fragments (covered samples) and
 // written (passing the depth test) as rates, and culled (the share of triangles culled: about
-// half for a closed mesh).
+// half for a closed mesh). On every core, also serial_share: the calling thread's time outside
+// the draw's tasks (the built-in executor, wrapped to time its runs) over the time of a draw on
+// one thread, and the speed-ups that Amdahl's law allows with that share on 16 and 64 threads
+// (amdahl16, amdahl64), so that a machine of few cores shows what would stop many from scaling.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
@@ -16,17 +24,52 @@
 namespace edgewise::bench {
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
+// The median time of one-thread draws of `mesh`, in seconds.
+double one_thread_seconds(const DrawMesh& mesh, DrawOptions options, Framebuffer& target) {
+  options.threads = 1;
+  options.executor = {};
+  std::vector<double> seconds;
+  for (int i = 0; i < 5; ++i) {
+    target.clear(kMeshClearColor, kMeshClearDepth);
+    const Clock::time_point start = Clock::now();
+    draw(target, mesh, options);
+    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  std::nth_element(seconds.begin(), seconds.begin() + 2, seconds.end());
+  return seconds[2];
+}
+
+// The speed-up on `threads` threads that a serial share `s` of the one-thread time allows.
+double amdahl_bound(double s, double threads) {
+  return 1.0 / (s + (1.0 - s) / threads);
+}
+
 void mesh_draw(benchmark::State& state, Isa isa, const MeshScene* scene, std::size_t threads) {
   const DrawMesh mesh = draw_mesh(*scene);
   DrawOptions options = mesh_options(isa, *scene);
   options.threads = threads;
+  // On several threads, the time the draw's tasks take, from the calling thread's side.
+  Clock::duration in_tasks{}, drawing{};
+  if (threads != 1) {
+    const TaskExecutor builtin = builtin_executor(threads);
+    options.executor = [&in_tasks, builtin](std::size_t count,
+                                            const std::function<void(std::size_t)>& task) {
+      const Clock::time_point start = Clock::now();
+      builtin(count, task);
+      in_tasks += Clock::now() - start;
+    };
+  }
   Framebuffer target(kWidth, kHeight);
   DrawReport last;
   for (auto _ : state) {
     state.PauseTiming();
     target.clear(kMeshClearColor, kMeshClearDepth);
     state.ResumeTiming();
+    const Clock::time_point start = Clock::now();
     last = draw(target, mesh, options);
+    drawing += Clock::now() - start;
     benchmark::DoNotOptimize(target.color_tiles());
     benchmark::ClobberMemory();
   }
@@ -42,6 +85,14 @@ void mesh_draw(benchmark::State& state, Isa isa, const MeshScene* scene, std::si
   state.counters["written"] = rate(double(last.fragments_passed));
   state.counters["culled"] =
       last.triangles > 0 ? double(last.culled) / double(last.triangles) : 0.0;
+  if (threads != 1 && iterations > 0) {
+    const double serial_seconds =
+        std::chrono::duration<double>(drawing - in_tasks).count() / iterations;
+    const double share = serial_seconds / one_thread_seconds(mesh, options, target);
+    state.counters["serial_share"] = share;
+    state.counters["amdahl16"] = amdahl_bound(share, 16.0);
+    state.counters["amdahl64"] = amdahl_bound(share, 64.0);
+  }
 }
 
 }  // namespace

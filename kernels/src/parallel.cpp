@@ -145,4 +145,11 @@ std::size_t default_thread_count() {
   return from_environment != 0 ? from_environment : detail::builtin_concurrency();
 }
 
+TaskExecutor builtin_executor(std::size_t threads) {
+  detail::Workers workers = detail::resolve_workers(threads, {}, "builtin_executor");
+  return [workers](std::size_t count, const std::function<void(std::size_t)>& task) {
+    workers.run(count, task);
+  };
+}
+
 }  // namespace edgewise

@@ -4,6 +4,7 @@
 // hierarchical depth and textures; a caller's executor gives the same image; EDGEWISE_THREADS.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -301,6 +302,19 @@ TEST_P(DrawThreads, CallersExecutorDrawsTheSameImage) {
       thread.join();
   };
   expect_same_frame(one, render(draws, 4, spawning), "4 threads, one std::thread per task");
+  // And the built-in executor, wrapped to count its runs: as without an executor.
+  for (std::size_t threads : kThreadCounts) {
+    runs = 0;
+    const TaskExecutor builtin = builtin_executor(threads);
+    const TaskExecutor counted = [&](std::size_t count,
+                                     const std::function<void(std::size_t)>& task) {
+      ++runs;
+      builtin(count, task);
+    };
+    expect_same_frame(one, render(draws, threads, counted),
+                      std::to_string(threads) + " threads, the built-in executor wrapped");
+    EXPECT_EQ(runs, 2u) << "binning, then the bins";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Isas, DrawThreads, ::testing::ValuesIn(every_isa()), isa_test_name);
@@ -356,6 +370,16 @@ TEST(ThreadCount, GarbageInTheEnvironmentVariableThrows) {
     options.threads = 2;
     EXPECT_NO_THROW(draw(target, mesh, options)) << value;
   }
+}
+
+TEST(ThreadCount, BuiltinExecutorRunsEveryTaskOnce) {
+  for (std::size_t threads : {std::size_t{1}, std::size_t{2}, std::size_t{5}}) {
+    std::vector<std::atomic<int>> runs(37);
+    builtin_executor(threads)(runs.size(), [&](std::size_t i) { ++runs[i]; });
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      EXPECT_EQ(runs[i].load(), 1) << "task " << i << " on " << threads << " threads";
+  }
+  EXPECT_THROW(builtin_executor(kMaxThreads + 1), std::invalid_argument);
 }
 
 TEST(ThreadCount, TooManyThreadsThrow) {

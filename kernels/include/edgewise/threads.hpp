@@ -26,6 +26,13 @@ using TaskExecutor =
 // it. Read at every call.
 std::size_t default_thread_count();
 
+// The executor a call uses when it is given none, for `threads` threads (0:
+// default_thread_count()): oneTBB's, in one arena per thread count, or plain std::threads in a
+// build without oneTBB. For a caller that wraps it, to time or trace the tasks of a call that
+// otherwise runs as without an executor. Throws std::invalid_argument as draw() does for a bad
+// count (or EDGEWISE_THREADS).
+TaskExecutor builtin_executor(std::size_t threads = 0);
+
 // The largest thread count a call accepts (larger DrawOptions::threads or
 // RasterOptions::threads throw std::invalid_argument).
 inline constexpr std::size_t kMaxThreads = 1024;
