@@ -8,9 +8,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <random>
@@ -142,10 +142,7 @@ int main(int argc, char** argv) {
         tools::add_isa_options(command_line, arguments.isa,
                                "the ISA of the fast paths (default: the best of this CPU)",
                                "measure the reference's paths");
-        tools::add_parsed_option(
-            command_line, "--csv", arguments.csv,
-            [](const std::string& path) { return std::optional(path); },
-            "also write the table to FILE")
+        tools::add_text_option(command_line, "--csv", arguments.csv, "also write the table to FILE")
             .type_name("FILE");
         return [&arguments] { return run(arguments); };
       });

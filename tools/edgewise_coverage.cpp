@@ -496,9 +496,7 @@ void add_options(tools::CommandLine& command_line, Arguments& arguments) {
                          "the ISA to rasterize with (default: the best ISA of this CPU, or "
                          "EDGEWISE_ISA)",
                          "rasterize with the scalar reference");
-  tools::add_parsed_option(
-      command_line, "-o", arguments.output,
-      [](const std::string& path) { return std::optional(path); }, "write the output to FILE")
+  tools::add_text_option(command_line, "-o", arguments.output, "write the output to FILE")
       .type_name("FILE");
   command_line.add_flag("--compare-isas", arguments.compare,
                         "compare every supported ISA with the reference");

@@ -291,10 +291,7 @@ int main(int argc, char** argv) {
         tools::add_isa_options(command_line, arguments.isa,
                                "the ISA (default: the best of this CPU)",
                                "paint with the reference");
-        tools::add_parsed_option(
-            command_line, "-o", arguments.output,
-            [](const std::string& path) { return std::optional(path); },
-            "write the image (PNG or EXR)")
+        tools::add_text_option(command_line, "-o", arguments.output, "write the image (PNG or EXR)")
             .type_name("FILE");
         return [&arguments] { return run(arguments); };
       });

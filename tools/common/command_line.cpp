@@ -120,4 +120,10 @@ Option add_text_option(CommandLine& line, const std::string& name, std::string& 
       name, [&value](const std::string& text) { value = text; }, description);
 }
 
+Option add_text_option(CommandLine& line, const std::string& name,
+                       std::optional<std::string>& value, const std::string& description) {
+  return line.add_value(
+      name, [&value](const std::string& text) { value = text; }, description);
+}
+
 }  // namespace edgewise::tools

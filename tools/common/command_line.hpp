@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,5 +89,7 @@ class CommandLine {
 // A text value as written, into `value`.
 Option add_text_option(CommandLine& line, const std::string& name, std::string& value,
                        const std::string& description);
+Option add_text_option(CommandLine& line, const std::string& name,
+                       std::optional<std::string>& value, const std::string& description);
 
 }  // namespace edgewise::tools

@@ -300,9 +300,7 @@ void add_options(tools::CommandLine& command_line, RenderCommandLine& line) {
   RenderSettings& settings = line.settings;
   command_line.description(
       "Renders a mesh with edgewise::draw() and prints the pipeline's counts and stage times.");
-  tools::add_parsed_option(
-      command_line, "--obj", settings.obj_path,
-      [](const std::string& path) { return std::optional(path); }, "the mesh to draw, an OBJ file")
+  tools::add_text_option(command_line, "--obj", settings.obj_path, "the mesh to draw, an OBJ file")
       .type_name("FILE");
   std::vector<std::string> scenes(std::begin(kBuiltinSceneNames), std::end(kBuiltinSceneNames));
   tools::add_named_option(
