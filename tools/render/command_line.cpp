@@ -12,6 +12,7 @@
 #include "edgewise/interpolation.hpp"
 #include "render/builtin_scenes.hpp"
 #include "render/image_writer.hpp"
+#include "texture_io/load_options.hpp"
 
 namespace edgewise::render_tool {
 namespace {
@@ -196,22 +197,13 @@ void add_texture_options(tools::CommandLine& command_line, RenderCommandLine& li
                 "table of their times; -o FILE.png writes FILE-<filter>.png")
       .group(kTextureGroup);
   tools::add_sampler_options(command_line, texture.sampler);
-  tools::add_pyramid_option(command_line, texture.pyramid,
-                            "how coarser levels are made (default box)");
-  command_line.add_flag("--srgb", texture.srgb,
-                        "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
-                        "others when loaded; alpha is linear");
-  tools::add_mebibytes_option(command_line, "--max-texture-mb", texture.limits.max_texture_bytes,
-                              "refuse an image file whose texels would take more than MB MiB\n"
-                              "as a texture (read from its header, before any pixel; default " +
-                                  std::to_string(texture_io::kDefaultMaxTextureBytes >> 20) + ")")
-      .group(kTextureGroup);
+  texture_io::add_texture_load_options(command_line, texture.pyramid, texture.srgb, texture.limits);
   tools::add_enum_option(command_line, "--derivatives", texture.derivatives,
                          "the sampler's screen derivatives of (s, t): differences in\n"
                          "2x2 pixel quads, as GPUs take them (default), or exact, from the\n"
                          "plane equations");
   for (const char* name : {"--wrap", "--lod", "--lod-bias", "--max-aniso", "--taps", "--pyramid",
-                           "--srgb", "--derivatives"}) {
+                           "--srgb", "--max-texture-mb", "--derivatives"}) {
     command_line.option(name).group(kTextureGroup);
   }
 }

@@ -6,7 +6,7 @@
 #include "common/choice_options.hpp"
 #include "common/isa_options.hpp"
 #include "common/sampler_options.hpp"
-#include "common/value_options.hpp"
+#include "texture_io/load_options.hpp"
 
 namespace edgewise::sample_tool {
 namespace {
@@ -67,15 +67,8 @@ void add_options(tools::CommandLine& command_line, SampleSettings& settings) {
   add_axis_wrap_option(command_line, "--wrap-s", settings.sampler.wrap_s,
                        "s (across), over --wrap");
   add_axis_wrap_option(command_line, "--wrap-t", settings.sampler.wrap_t, "t (down), over --wrap");
-  tools::add_pyramid_option(command_line, settings.pyramid,
-                            "how coarser levels are made (default box)");
-  command_line.add_flag("--srgb", settings.srgb,
-                        "R, G, B are sRGB-encoded: 8-bit texels are decoded by the sampler,\n"
-                        "others when loaded (clamped to [0, 1] first); alpha is linear");
-  tools::add_mebibytes_option(command_line, "--max-texture-mb", settings.limits.max_texture_bytes,
-                              "refuse an image whose texels would take more than MB MiB as a\n"
-                              "texture (read from its header, before any pixel; default " +
-                                  std::to_string(texture_io::kDefaultMaxTextureBytes >> 20) + ")");
+  texture_io::add_texture_load_options(command_line, settings.pyramid, settings.srgb,
+                                       settings.limits);
   tools::add_isa_options(command_line, settings.isa,
                          "the kernel (default: the best ISA of this CPU, or EDGEWISE_ISA)",
                          "the scalar double-precision reference kernel");
