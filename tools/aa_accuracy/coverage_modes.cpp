@@ -43,6 +43,25 @@ class AreaImageSink final : public AreaSink {
   CoverageImage& image_;
 };
 
+// Coverage-weighted blending of one triangle's areas over the image ("over"):
+// alpha += area (1 - alpha).
+class CompositingSink final : public AreaSink {
+ public:
+  explicit CompositingSink(CoverageImage& alpha) : alpha_(alpha) {}
+  void consume(std::span<const AreaTile> tiles) override {
+    for (const AreaTile& tile : tiles) {
+      for (int bit = 0; bit < 64; ++bit) {
+        const int x = tile.tile_x * 8 + bit % 8, y = tile.tile_y * 8 + bit / 8;
+        double& alpha = alpha_[static_cast<std::size_t>(y) * kAaSize + x];
+        alpha += tile.area[bit] * (1.0 - alpha);
+      }
+    }
+  }
+
+ private:
+  CoverageImage& alpha_;
+};
+
 const RasterTarget kTarget{kAaSize, kAaSize, std::nullopt};
 
 }  // namespace
@@ -149,14 +168,15 @@ std::vector<Vec2> closed_grid_mesh(std::uint64_t seed) {
   return vertices;
 }
 
-// Coverage-weighted blending, triangle after triangle ("over"): alpha += area (1 - alpha).
+// Coverage-weighted blending, triangle after triangle ("over"): alpha += area (1 - alpha). Each
+// triangle is rasterized on its own, so that each pixel's area is one triangle's.
 CoverageImage composited_areas(std::span<const Vec2> triangles, Isa isa) {
   CoverageImage alpha(static_cast<std::size_t>(kAaSize) * kAaSize, 0.0);
-  for (std::size_t t = 0; 3 * t < triangles.size(); ++t) {
-    const CoverageImage area = coverage_image(triangles.subspan(3 * t, 3), kAaModes - 1, isa);
-    for (std::size_t i = 0; i < alpha.size(); ++i)
-      alpha[i] += area[i] * (1.0 - alpha[i]);
-  }
+  RasterOptions options;
+  options.isa = isa;
+  CompositingSink sink(alpha);
+  for (std::size_t t = 0; 3 * t < triangles.size(); ++t)
+    rasterize_areas(triangles.subspan(3 * t, 3), {}, kTarget, options, sink);
   return alpha;
 }
 

@@ -1,6 +1,7 @@
-// Writing pixels to an image file through OpenImageIO, the format given by the file's extension
-// (.png, .exr, ...). Every image a tool writes goes through here: edgewise-render's frames,
-// edgewise-demo's picture, edgewise-texture-quality's results and errors.
+// Writing pixels to an image file, the format given by the file's extension (.png, .exr, ...):
+// 8-bit PNG files through libpng (png_encoder.hpp), the rest through OpenImageIO. Every image a
+// tool writes goes through here: edgewise-render's frames, edgewise-demo's picture,
+// edgewise-texture-quality's results and errors.
 #pragma once
 
 #include <cstdint>

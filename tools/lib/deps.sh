@@ -21,7 +21,8 @@ EDGEWISE_TOOLS_PACKAGES=(
   ninja-build          # the generator the scripts configure with
   libxsimd-dev         # the SIMD batches the library's kernels are written in
   libtbb-dev           # oneTBB: the library runs draw()'s and count_coverage()'s threads on it
-  libopenimageio-dev   # image files: the tools write PNG images and read textures
+  libopenimageio-dev   # image files: the tools read textures and write EXR images
+  libpng-dev           # libpng: the tools encode their PNG images with it
   openimageio-tools    # OpenImageIO's CMake package imports its tools (/usr/bin/iconvert...): no configure without
   libtinyobjloader-dev # edgewise-render reads OBJ meshes (testing/scene)
   libcli11-dev         # CLI11: every tool parses its command line with it
@@ -76,6 +77,7 @@ EDGEWISE_CHECK_SANITIZE_PACKAGES=(
   libxsimd-dev         # the kernels' SIMD batches
   libtbb-dev           # oneTBB, the library's threads
   libopenimageio-dev   # the tools, whose tests run sanitized too
+  libpng-dev           # the tools' PNG images
   openimageio-tools    # OpenImageIO's CMake package needs them; oiiotool writes test textures
   libtinyobjloader-dev # edgewise-render and the mesh tests
   libcli11-dev         # CLI11: the tools' command lines
