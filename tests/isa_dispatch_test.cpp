@@ -199,12 +199,13 @@ TEST_P(IsaForcing, KernelTableIsComplete) {
   EXPECT_NE(table.rasterize, nullptr);
   EXPECT_NE(table.count_coverage, nullptr);
   EXPECT_NE(table.transform_vertices, nullptr);
-  EXPECT_NE(table.map_to_screen, nullptr);
+  EXPECT_NE(table.map_vertices, nullptr);
+  EXPECT_NE(table.assemble_triangles, nullptr);
   EXPECT_NE(table.shade, nullptr);
   EXPECT_NE(table.sample, nullptr);
   EXPECT_NE(table.sample_fields, nullptr);
   EXPECT_NE(table.rasterize_areas, nullptr);
-  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 9,
+  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 10,
                 "a kernel was added to KernelTable: check it here");
 }
 

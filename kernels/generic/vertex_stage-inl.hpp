@@ -1,11 +1,12 @@
-// draw()'s vertex stage, triangle-parallel (docs/DESIGN.md, "The vertex stage"). Two passes:
-// - every mesh vertex, a batch at a time, through ScreenMapping: screen vertex i is mesh vertex
-//   i, so no vertex is looked up or remapped, and each vertex's class is kept as a code;
-// - every triangle in the mesh's order, a block of one triangle per lane at a time: when the
-//   codes of a block's corners say that all its triangles are inside every clipping plane (the
-//   common case), its indices are stored as they are (a run of such blocks at once); otherwise
-//   its triangles are taken one by one, in order, by the shared scalar add_triangle(), which
-//   clips where it must.
+// draw()'s vertex stage, triangle-parallel (docs/DESIGN.md, "The vertex stage"). Two passes,
+// each over a range (so that ranges may run on several threads):
+// - mesh vertices, a batch at a time, through ScreenMapping: screen vertex i is mesh vertex i,
+//   so no vertex is looked up or remapped, and each vertex's class is kept as a code;
+// - triangles in the mesh's order, a block of one triangle per lane at a time: when the codes of
+//   a block's corners say that all its triangles are inside every clipping plane (the common
+//   case), its indices are stored as they are (a run of such blocks at once); otherwise its
+//   triangles are taken one by one, in order, by the shared scalar add_triangle(), which clips
+//   where it must.
 // The results equal the reference's (kernels/reference/vertex_stage_reference.cpp) bit for bit.
 #pragma once
 
@@ -20,25 +21,25 @@
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
-// Every mesh vertex into `out` (sized by start_screen_mesh()) and its code into codes.
+// Mesh vertices [first, last) into `out` (sized by start_screen_mesh()) and their codes into
+// codes.
 template <class Arch>
-void map_vertices(const detail::VertexStageCall& call, detail::ScreenMesh& out,
-                  std::int32_t* codes) {
+void map_vertex_array(const detail::VertexStageCall& call, std::size_t first, std::size_t last,
+                      detail::ScreenMesh& out, std::int32_t* codes) {
   const ScreenMapping<Arch> mapping(call.transform, call.viewport, call.planes);
   constexpr std::size_t kLanes = ScreenMapping<Arch>::kLanes;
-  const std::size_t count = call.mesh.positions.size();
   const Vec3* in = call.mesh.positions.data();
   // The arrays' addresses as locals: the compiler cannot tell that the batches stored through
   // them leave `out` unchanged, and would load them again for every batch.
   Vec2* const positions = out.positions.data();
   float* const depth = out.depth.data();
   float* const clip_w = out.clip_w.data();
-  std::size_t i = 0;
-  for (; i + kLanes <= count; i += kLanes)
+  std::size_t i = first;
+  for (; i + kLanes <= last; i += kLanes)
     mapping.map(in + i, positions + i, depth + i, clip_w + i, codes + i);
-  if (i == count) return;
+  if (i == last) return;
   // The last few vertices through the same code, from and to buffers of a whole batch.
-  const std::size_t rest = count - i;
+  const std::size_t rest = last - i;
   Vec3 tail_in[kLanes] = {};
   Vec2 tail_positions[kLanes];
   float tail_depth[kLanes], tail_clip_w[kLanes];
@@ -130,21 +131,22 @@ void store_passing_triangles(const detail::VertexStageCall& call, std::size_t fi
   }
 }
 
-// Every triangle, in the mesh's order, into out.indices (and through clipping). A run of
-// blocks that pass whole is found first and stored at once.
+// Triangles [first, last), in the mesh's order, into out.indices (and through clipping). A run
+// of blocks that pass whole is found first and stored at once.
 template <class Arch>
-void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t* codes,
-                        detail::ScreenMesh& out, DrawReport& report) {
+void assemble_triangle_range(const detail::VertexStageCall& call, const std::int32_t* codes,
+                             std::size_t first, std::size_t last, detail::ScreenMesh& out,
+                             DrawReport& report) {
   constexpr std::size_t kLanes = xsimd::batch<std::int32_t, Arch>::size;
   const bool indexed = !call.mesh.indices.empty();
-  const auto run_end = [&](std::size_t first, auto block_passes) {
-    std::size_t end = first;
-    while (end + kLanes <= call.triangles && block_passes(end))
+  const auto run_end = [&](std::size_t start, auto block_passes) {
+    std::size_t end = start;
+    while (end + kLanes <= last && block_passes(end))
       end += kLanes;
     return end;
   };
-  std::size_t t = 0;
-  while (t + kLanes <= call.triangles) {
+  std::size_t t = first;
+  while (t + kLanes <= last) {
     const std::size_t end =
         indexed
             ? run_end(t, [&](std::size_t b) { return indexed_block_passes<Arch>(call, codes, b); })
@@ -157,17 +159,8 @@ void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t*
     for (const std::size_t block_end = t + kLanes; t < block_end; ++t)
       add_triangle_by_codes(call, codes, t, out, report);
   }
-  for (; t < call.triangles; ++t)
+  for (; t < last; ++t)
     add_triangle_by_codes(call, codes, t, out, report);
-}
-
-template <class Arch>
-void map_mesh_to_screen(const detail::VertexStageCall& call, detail::ScreenMesh& out,
-                        DrawReport& report) {
-  detail::start_screen_mesh(call, out);
-  detail::GrowableArray<std::int32_t> codes(call.mesh.positions.size());
-  map_vertices<Arch>(call, out, codes.data());
-  assemble_triangles<Arch>(call, codes.data(), out, report);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

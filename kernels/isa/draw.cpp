@@ -27,9 +27,15 @@ void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* 
   transform_vertex_array<Arch>(m, in, count, out);
 }
 
-void map_to_screen(const detail::VertexStageCall& call, detail::ScreenMesh& out,
-                   DrawReport& report) {
-  map_mesh_to_screen<Arch>(call, out, report);
+void map_vertices(const detail::VertexStageCall& call, std::size_t first, std::size_t last,
+                  detail::ScreenMesh& out, std::int32_t* codes) {
+  map_vertex_array<Arch>(call, first, last, out, codes);
+}
+
+void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t* codes,
+                        std::size_t first, std::size_t last, detail::ScreenMesh& out,
+                        DrawReport& report) {
+  assemble_triangle_range<Arch>(call, codes, first, last, out, report);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -7,9 +7,8 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 const detail::KernelTable& kernel_table() {
   static constexpr detail::KernelTable table{
-      EDGEWISE_ISA_ENUM, &rasterize, &count_coverage, &transform_vertices,
-      &map_to_screen,    &shade,     &sample,         &sample_fields,
-      &rasterize_areas};
+      EDGEWISE_ISA_ENUM,   &rasterize, &count_coverage, &transform_vertices, &map_vertices,
+      &assemble_triangles, &shade,     &sample,         &sample_fields,      &rasterize_areas};
   return table;
 }
 

@@ -1,11 +1,17 @@
 #include "vertex_stage_reference.hpp"
 
-#include <cstddef>
-#include <cstdint>
-#include <vector>
-
 namespace edgewise::reference {
 namespace {
+
+// A vertex's ClipClass as a code: bit 0 checked, bit 1 inside, the frustum planes from bit 2.
+std::int32_t code_of(const ClipClass& c) {
+  return (c.checked ? 1 : 0) | (c.inside ? 2 : 0) |
+         static_cast<std::int32_t>(c.outside_frustum) << 2;
+}
+
+ClipClass class_of(std::int32_t code) {
+  return {static_cast<std::uint16_t>(code >> 2), (code & 2) != 0, (code & 1) != 0};
+}
 
 // What clip_triangle() would conclude from the vertices' classes alone (clip.hpp, ClipClass).
 detail::TriangleClass triangle_class(const ClipClass& a, const ClipClass& b, const ClipClass& c) {
@@ -20,20 +26,23 @@ detail::TriangleClass triangle_class(const ClipClass& a, const ClipClass& b, con
 
 }  // namespace
 
-void map_to_screen(const detail::VertexStageCall& call, detail::ScreenMesh& out,
-                   DrawReport& report) {
-  detail::start_screen_mesh(call, out);
-  const std::size_t vertex_count = call.mesh.positions.size();
-  std::vector<ClipClass> classes(vertex_count);
-  for (std::size_t i = 0; i < vertex_count; ++i) {
+void map_vertices(const detail::VertexStageCall& call, std::size_t first, std::size_t last,
+                  detail::ScreenMesh& out, std::int32_t* codes) {
+  for (std::size_t i = first; i < last; ++i) {
     const Vec4 clip = transform(call.transform, call.mesh.positions[i]);
-    classes[i] = classify_clip_vertex(clip, call.planes);
+    codes[i] = code_of(classify_clip_vertex(clip, call.planes));
     const ScreenVertex s = to_screen(clip, call.viewport);
     out.positions[i] = {detail::snap(s.x), detail::snap(s.y)};
     out.depth[i] = s.z;
     out.clip_w[i] = clip.w;
   }
-  for (std::size_t t = 0; t < call.triangles; ++t) {
+}
+
+void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t* codes,
+                        std::size_t first, std::size_t last, detail::ScreenMesh& out,
+                        DrawReport& report) {
+  const std::size_t vertex_count = call.mesh.positions.size();
+  for (std::size_t t = first; t < last; ++t) {
     std::uint32_t corner[3];
     bool in_range = true;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -43,7 +52,8 @@ void map_to_screen(const detail::VertexStageCall& call, detail::ScreenMesh& out,
       corner[i] = static_cast<std::uint32_t>(v);
     }
     const detail::TriangleClass triangle =
-        in_range ? triangle_class(classes[corner[0]], classes[corner[1]], classes[corner[2]])
+        in_range ? triangle_class(class_of(codes[corner[0]]), class_of(codes[corner[1]]),
+                                  class_of(codes[corner[2]]))
                  : detail::TriangleClass::bad_index;
     detail::add_triangle(call, corner, triangle, out, report);
   }

@@ -4,6 +4,7 @@
 // kernel as a one-thread call, with the bin as the clip rectangle. Every tile lies in one bin,
 // so each tile (colour, depth and depth bound) sees the same triangles in the same order as with
 // one thread: the framebuffer and every count are the same bit for bit.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -13,6 +14,7 @@
 #include "framebuffer_access.hpp"
 #include "texture_description.hpp"
 #include "triangle_binning.hpp"
+#include "vertex_stage.hpp"
 
 namespace edgewise::detail {
 
@@ -57,6 +59,32 @@ struct BinCounts {
   ShadeCounts shading;
   RasterReport triangles;
 };
+
+// The vertex stage's counts of each range (clipping, outside, culled, errors) into `report`.
+void add_vertex_counts(DrawReport& report, std::span<const DrawReport> ranges) {
+  for (const DrawReport& part : ranges) {
+    report.clipped += part.clipped;
+    report.clip_triangles += part.clip_triangles;
+    report.outside += part.outside;
+    report.culled += part.culled;
+    report.errors += part.errors;
+  }
+}
+
+// Triangles [first, last) of screen mesh `screen` (first_vertex_index 0), as the binning and
+// the coverage kernels take them.
+TriangleBatch screen_triangles(const Framebuffer& target, const ScreenMesh& screen,
+                               const std::uint32_t* indices, std::size_t triangles,
+                               const PixelRect& clip, CullMode cull) {
+  return {screen.positions.data(),
+          screen.positions.size(),
+          indices,
+          triangles,
+          clip,
+          cull,
+          nullptr,
+          FramebufferAccess::sample_pattern(target)};
+}
 
 // Shades every bin, one task each: the lists of every range in range order, each through the
 // kernel with the bin as its clip rectangle, with range r's screen mesh (range_batches[r]).
@@ -137,35 +165,143 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
     ScreenMesh& screen = screens[range];
     screen = map_to_screen(part, target, triangle_range(mesh, options, first, last), options);
     vertex_reports[range] = part.report;
-    const TriangleBatch batch{screen.positions.data(),
-                              screen.positions.size(),
-                              screen.indices.data(),
-                              screen.indices.size() / 3,
-                              call.clip,
-                              options.cull,
-                              nullptr,
-                              FramebufferAccess::sample_pattern(target)};
+    const TriangleBatch batch = screen_triangles(
+        target, screen, screen.indices.data(), screen.indices.size() / 3, call.clip, options.cull);
     bin_screen_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),
                          range_reports[range]);
   });
   DrawReport& report = call.report;
-  for (const DrawReport& part : vertex_reports) {
-    report.clipped += part.clipped;
-    report.clip_triangles += part.clip_triangles;
-    report.outside += part.outside;
-    report.culled += part.culled;
-    report.errors += part.errors;
-  }
+  add_vertex_counts(report, vertex_reports);
   // As the direct path: no kernel call without screen triangles.
   if (count_screen_triangles(report, range_reports) == 0) return;
-  std::optional<FlatTexture> flat_texture;
-  if (options.texture) flat_texture.emplace(*options.texture->texture);
-  const TextureDescription* texture = flat_texture ? &flat_texture->description() : nullptr;
+  // The texture flattened for the kernels once per draw.
+  std::optional<FlatTexture> flat;
+  if (options.texture) flat.emplace(*options.texture->texture);
+  const TextureDescription* texture = flat ? &flat->description() : nullptr;
   std::vector<ShadeBatch> range_batches;
   range_batches.reserve(ranges);
   for (const ScreenMesh& screen : screens)
     range_batches.push_back(make_shade_batch(target, screen, options, call.clip, texture));
   shade_bins(call, grid, lists, range_batches);
+}
+
+namespace {
+
+// The screen mesh `screen` of `vertices` mesh vertices, followed by the vertices that each
+// range's clipping made (parts[r], first_vertex_index `vertices`), in range order, as one screen
+// mesh: copied in ranges on the call's threads, vertex ranges and parts at once. Each part's
+// indices of its own vertices are renumbered to where they now are; `first` (one per part) is
+// where each part's vertices begin.
+ScreenMesh join_clipped_vertices(const DrawCall& call, const VertexStageCall& stage,
+                                 const ScreenMesh& screen, std::span<ScreenMesh> parts,
+                                 std::span<const std::size_t> first, std::size_t total,
+                                 std::size_t vertex_ranges) {
+  const std::size_t vertices = stage.mesh.positions.size();
+  ScreenMesh joined;
+  Vec2* positions = joined.positions.extend(total);
+  float* depth = joined.depth.extend(total);
+  float* clip_w = joined.clip_w.extend(total);
+  Vec4* colors = joined.colors.own(total);
+  Vec3* normals = stage.diffuse ? joined.normals.own(total) : nullptr;
+  Vec2* uvs = stage.textured ? joined.uvs.own(total) : nullptr;
+  // Values [from, from + count) of `values` to `to` + `at`.
+  const auto copy = [](const auto* values, std::size_t from, std::size_t count, auto* to,
+                       std::size_t at) { std::copy_n(values + from, count, to + at); };
+  const auto copy_vertices = [&](const ScreenMesh& source, std::size_t from, std::size_t count,
+                                 std::size_t at) {
+    copy(source.positions.data(), from, count, positions, at);
+    copy(source.depth.data(), from, count, depth, at);
+    copy(source.clip_w.data(), from, count, clip_w, at);
+    copy(source.colors.data(), from, count, colors, at);
+    if (normals != nullptr) copy(source.normals.data(), from, count, normals, at);
+    if (uvs != nullptr) copy(source.uvs.data(), from, count, uvs, at);
+  };
+  call.workers.run(vertex_ranges + parts.size(), [&](std::size_t task) {
+    if (task < vertex_ranges) {
+      const std::size_t begin = task * vertices / vertex_ranges;
+      const std::size_t end = (task + 1) * vertices / vertex_ranges;
+      copy_vertices(screen, begin, end - begin, begin);
+      return;
+    }
+    const std::size_t range = task - vertex_ranges;
+    ScreenMesh& part = parts[range];
+    copy_vertices(part, 0, part.positions.size(), first[range]);
+    const auto shift = static_cast<std::uint32_t>(first[range] - vertices);
+    std::uint32_t* index = part.indices.data();
+    for (std::size_t i = 0; i < part.indices.size(); ++i)
+      index[i] += index[i] >= vertices ? shift : 0;
+  });
+  return joined;
+}
+
+}  // namespace
+
+void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
+                            const DrawOptions& options) {
+  const std::size_t vertices = mesh.positions.size();
+  const std::size_t triangles = call.report.triangles;
+  const std::size_t threads = call.workers.threads;
+  const VertexStageCall stage = vertex_stage_call(target, mesh, options, triangles);
+
+  // The mesh's vertices, a range per task (ranges of the binning's length), into one screen
+  // mesh, each with its code.
+  ScreenMesh screen;
+  start_screen_mesh(stage, screen);
+  GrowableArray<std::int32_t> codes(vertices);
+  const std::size_t vertex_ranges = binning_ranges(vertices, threads);
+  call.workers.run(vertex_ranges, [&](std::size_t range) {
+    map_vertex_range(*call.kernels, stage, range * vertices / vertex_ranges,
+                     (range + 1) * vertices / vertex_ranges, screen, codes.data());
+  });
+
+  // Then the triangles, a range per task, each range's indices (and the vertices its clipping
+  // makes) in a screen mesh of its own; binned at once, unless it made vertices.
+  const BinGrid grid(call.clip, threads, call.samples);
+  const std::size_t ranges = binning_ranges(triangles, threads);
+  BinLists lists(ranges, grid.count());
+  std::vector<ScreenMesh> parts(ranges);
+  std::vector<DrawReport> vertex_reports(ranges);
+  std::vector<RasterReport> range_reports(ranges);
+  const auto bin_part = [&](const ScreenMesh& all, std::size_t range) {
+    const ScreenMesh& part = parts[range];
+    const TriangleBatch batch = screen_triangles(target, all, part.indices.data(),
+                                                 part.indices.size() / 3, call.clip, options.cull);
+    bin_screen_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),
+                         range_reports[range]);
+  };
+  call.workers.run(ranges, [&](std::size_t range) {
+    const std::size_t first = range * triangles / ranges, last = (range + 1) * triangles / ranges;
+    ScreenMesh& part = parts[range];
+    part.first_vertex_index = vertices;
+    part.indices.reserve(3 * (last - first));
+    call.kernels->assemble_triangles(stage, codes.data(), first, last, part, vertex_reports[range]);
+    if (part.positions.empty()) bin_part(screen, range);
+  });
+
+  // The vertices that clipping made follow the mesh's, range after range, as with one thread;
+  // the ranges that made some are binned once they are in place.
+  std::vector<std::size_t> first_clipped(ranges);
+  std::size_t total = vertices;
+  for (std::size_t range = 0; range < ranges; ++range) {
+    first_clipped[range] = total;
+    total += parts[range].positions.size();
+  }
+  if (total != vertices) {
+    screen = join_clipped_vertices(call, stage, screen, parts, first_clipped, total, vertex_ranges);
+    call.workers.run(ranges, [&](std::size_t range) {
+      if (!parts[range].positions.empty()) bin_part(screen, range);
+    });
+  }
+
+  DrawReport& report = call.report;
+  add_vertex_counts(report, vertex_reports);
+  if (count_screen_triangles(report, range_reports) == 0) return;
+  std::optional<FlatTexture> flat;
+  if (options.texture) flat.emplace(*options.texture->texture);
+  const ShadeBatch whole =
+      make_shade_batch(target, screen, options, call.clip, flat ? &flat->description() : nullptr);
+  // Every range's triangles index the one screen mesh.
+  shade_bins(call, grid, lists, std::vector<ShadeBatch>(ranges, whole));
 }
 
 }  // namespace edgewise::detail

@@ -151,8 +151,12 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
 DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options) {
   detail::DrawCall call = detail::prepare_draw(target, mesh, options);
   if (!call.has_work()) return call.report;
-  if (call.binned() && mesh.indices.empty()) {
-    detail::draw_in_ranges(call, target, mesh, options);
+  if (call.binned()) {
+    if (mesh.indices.empty()) {
+      detail::draw_in_ranges(call, target, mesh, options);
+    } else {
+      detail::draw_indexed_in_ranges(call, target, mesh, options);
+    }
     return call.report;
   }
   const detail::ScreenMesh screen = detail::map_to_screen(call, target, mesh, options);

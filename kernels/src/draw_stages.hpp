@@ -1,7 +1,7 @@
 // draw()'s stages, each a function of its own, for the project's tools and benchmarks that time
 // them apart: draw() is exactly prepare_draw(), then (for a call with work) map_to_screen() and
-// shade_screen_mesh(), or, for a mesh without indices on several threads, draw_in_ranges(),
-// which runs the vertex stage on ranges of triangles at once (docs/DESIGN.md, "Threads").
+// shade_screen_mesh(), or, for a binned() call, draw_in_ranges() or draw_indexed_in_ranges(),
+// which run the vertex stage in ranges too (docs/DESIGN.md, "Threads").
 #pragma once
 
 #include "edgewise/draw.hpp"
@@ -42,5 +42,12 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
 // mesh of its own and binned by one task; then each bin is shaded by one task.
 void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
                     const DrawOptions& options);
+
+// The same for a mesh with indices, whose triangles share vertices: its vertices are mapped in
+// ranges into one screen mesh, then its triangles are assembled (clipped, counted) and binned in
+// ranges, each range keeping the vertices its clipping makes, which then follow the mesh's in
+// range order. Nothing on the calling thread grows with the mesh but the allocations.
+void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
+                            const DrawOptions& options);
 
 }  // namespace edgewise::detail

@@ -19,8 +19,11 @@ void rasterize_areas(const detail::TriangleBatch& batch, AreaSink& sink, RasterR
 
 // draw.cpp
 void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);
-void map_to_screen(const detail::VertexStageCall& call, detail::ScreenMesh& out,
-                   DrawReport& report);
+void map_vertices(const detail::VertexStageCall& call, std::size_t first, std::size_t last,
+                  detail::ScreenMesh& out, std::int32_t* codes);
+void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t* codes,
+                        std::size_t first, std::size_t last, detail::ScreenMesh& out,
+                        DrawReport& report);
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
 
 // sample.cpp

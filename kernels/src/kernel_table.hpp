@@ -47,10 +47,16 @@ struct KernelTable {
   // Drawing (draw.hpp): the vertex transform, out[i] = transform(m, in[i]) (camera.hpp) bit
   // for bit, and the screen-space triangles shaded into the framebuffer.
   void (*transform_vertices)(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out);
-  // The vertex stage (vertex_stage.hpp): every vertex transformed, classified against the
-  // clipping planes, mapped to the screen and snapped; every triangle passed on, clipped or
-  // counted out, in the mesh's order. `out` is empty on entry.
-  void (*map_to_screen)(const VertexStageCall& call, ScreenMesh& out, DrawReport& report);
+  // The vertex stage (vertex_stage.hpp), in two passes that ranges may run apart. Vertices
+  // [first, last) transformed, classified against the clipping planes (a code each, which only
+  // this table's assemble_triangles reads), mapped to the screen and snapped into `out` (sized by
+  // start_screen_mesh()); then triangles [first, last), every vertex's code known, passed on,
+  // clipped or counted out, in the mesh's order, appended to `out`.
+  void (*map_vertices)(const VertexStageCall& call, std::size_t first, std::size_t last,
+                       ScreenMesh& out, std::int32_t* codes);
+  void (*assemble_triangles)(const VertexStageCall& call, const std::int32_t* codes,
+                             std::size_t first, std::size_t last, ScreenMesh& out,
+                             DrawReport& report);
   void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
   // Sampling (sample.hpp): queries and results as records, or as one array per field.
   SampleKernel sample;

@@ -1,7 +1,9 @@
 // What draw()'s vertex stage hands to the shading kernels: screen-space vertices and triangles.
 // Screen vertex i (i below the mesh's vertex count) is the mesh's vertex i; the vertices that
 // clipping makes follow them. Vertices that no drawn triangle uses are mapped like the others
-// and never read.
+// and never read. A range of an indexed mesh's triangles, assembled on its own, keeps the
+// vertices its clipping makes in a screen mesh of its own, numbered on from the mesh's vertices
+// (ScreenMesh::first_vertex_index).
 #pragma once
 
 #include <algorithm>
@@ -21,11 +23,13 @@ template <class T>
 class ScreenAttribute {
  public:
   void borrow(std::span<const T> values) { borrowed_ = values; }
-  // `count` copies of `value`, owned (a mesh without colours is opaque white).
-  void fill(std::size_t count, const T& value) {
-    std::fill_n(owned_.extend(count), count, value);
+  // `count` owned values, left for the caller to write (a mesh without colours is opaque white,
+  // written by the vertex ranges that map its vertices).
+  T* own(std::size_t count) {
     owning_ = true;
+    return owned_.extend(count);
   }
+  T* owned_data() { return owned_.data(); }
   void push_back(T value) {
     if (!owning_) {
       std::copy_n(borrowed_.data(), borrowed_.size(), owned_.extend(borrowed_.size()));
@@ -52,6 +56,9 @@ struct ScreenMesh {
   ScreenAttribute<Vec3> normals;         // diffuse shading only
   ScreenAttribute<Vec2> uvs;             // textured draws only
   GrowableArray<std::uint32_t> indices;  // three per screen triangle, in the mesh's order
+  // The index that positions[0] has in `indices`: 0, or the mesh's vertex count for a range's
+  // screen mesh, which holds only the vertices its clipping makes.
+  std::size_t first_vertex_index = 0;
 };
 
 }  // namespace edgewise::detail

@@ -2,8 +2,10 @@
 // and the parts every kernel shares (vertex_stage.hpp).
 #include "vertex_stage.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 #include "draw_stages.hpp"
 
@@ -28,21 +30,26 @@ Vec3 blend(const Vec3& a, const Vec3& b, const Vec3& c, float b0, float b1, floa
 }
 
 template <class T>
-T blend(const ScreenAttribute<T>& values, const std::uint32_t (&corner)[3], const ClipVertex& v) {
+T blend(std::span<const T> values, const std::uint32_t (&corner)[3], const ClipVertex& v) {
   return blend(values[corner[0]], values[corner[1]], values[corner[2]], v.b0, v.b1, v.b2);
 }
 
-// Appends a vertex made by clipping triangle `corner`, its attributes blended from the corners'.
+constexpr Vec4 kOpaqueWhite{1.0f, 1.0f, 1.0f, 1.0f};
+
+// Appends a vertex made by clipping triangle `corner`, its attributes blended from the corners'
+// (the mesh's own vertices).
 void append_clipped(const VertexStageCall& call, const ClipVertex& v,
                     const std::uint32_t (&corner)[3], ScreenMesh& out) {
   const ScreenVertex s = to_screen(v.position, call.viewport);
   out.positions.push_back({snap(s.x), snap(s.y)});
   out.depth.push_back(s.z);
   out.clip_w.push_back(v.position.w);
-  // Each blend is taken before its push_back, which may move the attribute's values.
-  out.colors.push_back(blend(out.colors, corner, v));
-  if (call.diffuse) out.normals.push_back(blend(out.normals, corner, v));
-  if (call.textured) out.uvs.push_back(blend(out.uvs, corner, v));
+  // A mesh without colours is opaque white, blended like any other colour.
+  out.colors.push_back(call.mesh.colors.empty()
+                           ? blend(kOpaqueWhite, kOpaqueWhite, kOpaqueWhite, v.b0, v.b1, v.b2)
+                           : blend(call.mesh.colors, corner, v));
+  if (call.diffuse) out.normals.push_back(blend(call.mesh.normals, corner, v));
+  if (call.textured) out.uvs.push_back(blend(call.mesh.uvs, corner, v));
 }
 
 void push_triangle(ScreenMesh& out, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
@@ -65,7 +72,7 @@ void clip(const VertexStageCall& call, const std::uint32_t (&corner)[3], ScreenM
       return;
     case ClipStatus::clipped: {
       ++report.clipped;
-      const auto first = static_cast<std::uint32_t>(out.positions.size());
+      const auto first = static_cast<std::uint32_t>(out.first_vertex_index + out.positions.size());
       for (int k = 0; k < polygon.count; ++k)
         append_clipped(call, polygon.vertices[k], corner, out);
       for (int k = 0; k < polygon.triangle_count(); ++k)
@@ -99,19 +106,47 @@ float snap(float v) {
   return static_cast<float>(rounded / 256.0);
 }
 
+VertexStageCall vertex_stage_call(const Framebuffer& target, const DrawMesh& mesh,
+                                  const DrawOptions& options, std::size_t triangles) {
+  const Viewport viewport{target.width(), target.height()};
+  return {mesh,
+          options.transform,
+          viewport,
+          guard_band_planes(viewport),
+          options.shading == Shading::diffuse,
+          options.texture.has_value(),
+          triangles};
+}
+
 void start_screen_mesh(const VertexStageCall& call, ScreenMesh& out) {
   const std::size_t n = call.mesh.positions.size();
   out.positions.extend(n);
   out.depth.extend(n);
   out.clip_w.extend(n);
   if (call.mesh.colors.empty()) {
-    out.colors.fill(n, Vec4{1.0f, 1.0f, 1.0f, 1.0f});
+    out.colors.own(n);
   } else {
     out.colors.borrow(call.mesh.colors);
   }
   if (call.diffuse) out.normals.borrow(call.mesh.normals);
   if (call.textured) out.uvs.borrow(call.mesh.uvs);
+}
+
+void map_vertex_range(const KernelTable& kernels, const VertexStageCall& call, std::size_t first,
+                      std::size_t last, ScreenMesh& out, std::int32_t* codes) {
+  kernels.map_vertices(call, first, last, out, codes);
+  if (call.mesh.colors.empty())
+    std::fill(out.colors.owned_data() + first, out.colors.owned_data() + last, kOpaqueWhite);
+}
+
+void run_vertex_stage(const KernelTable& kernels, const VertexStageCall& call, ScreenMesh& out,
+                      DrawReport& report) {
+  const std::size_t n = call.mesh.positions.size();
+  start_screen_mesh(call, out);
+  GrowableArray<std::int32_t> codes(n);
+  map_vertex_range(kernels, call, 0, n, out, codes.data());
   out.indices.reserve(3 * call.triangles);
+  kernels.assemble_triangles(call, codes.data(), 0, call.triangles, out, report);
 }
 
 void add_triangle(const VertexStageCall& call, const std::uint32_t (&corner)[3],
@@ -134,16 +169,9 @@ void add_triangle(const VertexStageCall& call, const std::uint32_t (&corner)[3],
 
 ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
                          const DrawOptions& options) {
-  const Viewport viewport{target.width(), target.height()};
-  const VertexStageCall stage{mesh,
-                              options.transform,
-                              viewport,
-                              guard_band_planes(viewport),
-                              options.shading == Shading::diffuse,
-                              options.texture.has_value(),
-                              static_cast<std::size_t>(call.report.triangles)};
   ScreenMesh screen;
-  call.kernels->map_to_screen(stage, screen, call.report);
+  run_vertex_stage(*call.kernels, vertex_stage_call(target, mesh, options, call.report.triangles),
+                   screen, call.report);
   return screen;
 }
 

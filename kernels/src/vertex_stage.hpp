@@ -12,6 +12,7 @@
 #include "clip.hpp"
 #include "edgewise/camera.hpp"
 #include "edgewise/draw.hpp"
+#include "kernel_table.hpp"
 #include "screen_mesh.hpp"
 
 namespace edgewise::detail {
@@ -32,10 +33,24 @@ struct VertexStageCall {
 // ones pass through unchanged. Every vertex the shading kernels see has been snapped so.
 float snap(float v);
 
-// Sizes `out` for the mesh's vertices (positions, depth and w left for the caller to write),
-// borrows the mesh's attributes (opaque white when it has no colours) and reserves the indices
-// of a mesh drawn without clipping.
+// The vertex stage of a draw() call on `target` (its viewport and guard band).
+VertexStageCall vertex_stage_call(const Framebuffer& target, const DrawMesh& mesh,
+                                  const DrawOptions& options, std::size_t triangles);
+
+// Sizes `out` for the mesh's vertices (positions, depth, w and, for a mesh without colours, the
+// colours, left for map_vertex_range() to write) and borrows the mesh's attributes.
 void start_screen_mesh(const VertexStageCall& call, ScreenMesh& out);
+
+// Vertices [first, last) through the kernels' map_vertices (kernel_table.hpp): mapped into
+// `out` (sized by start_screen_mesh()) and their codes into codes[first, last); for a mesh
+// without colours, their colour opaque white. Ranges of vertices may run at once.
+void map_vertex_range(const KernelTable& kernels, const VertexStageCall& call, std::size_t first,
+                      std::size_t last, ScreenMesh& out, std::int32_t* codes);
+
+// The whole vertex stage on the calling thread: every vertex, then every triangle, into `out`
+// (empty on entry), counted into `report`.
+void run_vertex_stage(const KernelTable& kernels, const VertexStageCall& call, ScreenMesh& out,
+                      DrawReport& report);
 
 // What the classes of a triangle's vertices (classify_clip_vertex()) say about it, before
 // clip_triangle() is asked.
@@ -48,7 +63,8 @@ enum class TriangleClass : std::uint8_t {
 
 // Adds mesh triangle `corner` to the screen mesh, counting what happens to it in the report as
 // draw() does: an inside one by its three vertices, an outside or bad one only counted, an
-// undecided one through clip_triangle(), whose new vertices (attributes blended) are appended.
+// undecided one through clip_triangle(), whose new vertices (attributes blended from the
+// mesh's) are appended to `out`, numbered from out.first_vertex_index.
 void add_triangle(const VertexStageCall& call, const std::uint32_t (&corner)[3],
                   TriangleClass triangle_class, ScreenMesh& out, DrawReport& report);
 

@@ -4,6 +4,7 @@
 // hierarchical depth and textures; a caller's executor gives the same image; EDGEWISE_THREADS.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -198,7 +199,7 @@ TEST_P(DrawThreads, OverlappingClippedTrianglesDrawTheSameImage) {
   }
 }
 
-// With indices, the vertex stage runs on the calling thread and the shading in bins.
+// With indices, the vertex stage runs in ranges of vertices, then of triangles.
 TEST_P(DrawThreads, IndexedMeshDrawsTheSameImage) {
   const ThreadScene& scene = shared_scene();
   std::vector<std::uint32_t> indices(scene.positions.size());
@@ -207,6 +208,53 @@ TEST_P(DrawThreads, IndexedMeshDrawsTheSameImage) {
   DrawOptions options = base_options(isa());
   options.interpolation = InterpolationMethod::scanline;
   expect_same_for_every_thread_count({{mesh_of(scene, indices), options}});
+}
+
+// A ground grid just below the eye whose triangles share their vertices, in a random order, so
+// that every range of triangles holds some that the near plane clips and shares vertices with
+// the others: coloured, lit and textured, so that every attribute of the clipped vertices
+// follows the mesh's.
+TEST_P(DrawThreads, IndexedGridClippedInEveryRangeDrawsTheSameImage) {
+  constexpr int kSide = 60;  // vertices a side: 6,962 triangles, several ranges
+  ThreadScene grid;
+  Random random(29);
+  for (int i = 0; i < kSide; ++i) {
+    for (int j = 0; j < kSide; ++j) {
+      grid.positions.push_back(
+          {-1.0f + 2.0f * i / (kSide - 1), -0.2f, 1.0f - 11.0f * j / (kSide - 1)});
+      grid.colors.push_back(
+          {static_cast<float>(random.uniform()), static_cast<float>(random.uniform()), 0.5f, 1.0f});
+      grid.normals.push_back({static_cast<float>(random.uniform(-0.3, 0.3)), 1.0f, 0.0f});
+      grid.uvs.push_back({0.5f * i, 0.5f * j});
+    }
+  }
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for (int i = 0; i + 1 < kSide; ++i) {
+    for (int j = 0; j + 1 < kSide; ++j) {
+      const auto v = [](int x, int z) { return static_cast<std::uint32_t>(x * kSide + z); };
+      triangles.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1)});
+      triangles.push_back({v(i, j), v(i + 1, j + 1), v(i, j + 1)});
+    }
+  }
+  for (std::size_t k = triangles.size(); k > 1; --k)  // Fisher-Yates
+    std::swap(triangles[k - 1], triangles[static_cast<std::size_t>(random.integer(0, k - 1))]);
+  std::vector<std::uint32_t> indices;
+  for (const auto& triangle : triangles)
+    indices.insert(indices.end(), triangle.begin(), triangle.end());
+  std::vector<std::uint8_t> texels(16 * 16 * 4);
+  for (std::uint8_t& t : texels)
+    t = static_cast<std::uint8_t>(random.integer(0, 255));
+  const Texture texture = Texture::from_rgba8(16, 16, texels, ColorEncoding::linear);
+  DrawOptions options = base_options(isa());
+  options.shading = Shading::diffuse;
+  options.texture = DrawTexture{&texture, {}, TextureDerivatives::quad};
+  options.texture->sampler.filter = TextureFilter::bilinear;
+  const std::vector<std::pair<DrawMesh, DrawOptions>> draws = {{mesh_of(grid, indices), options}};
+  const Frame one = render(draws, 1);
+  EXPECT_GT(one.reports[0].clipped, 20u) << "the near plane cuts the grid in view";
+  EXPECT_GT(one.reports[0].fragments_passed, 0u);
+  for (std::size_t threads : kThreadCounts)
+    expect_same_frame(one, render(draws, threads), std::to_string(threads) + " threads");
 }
 
 TEST_P(DrawThreads, EqualDepthsAndCullingDrawTheSameImage) {

@@ -8,6 +8,7 @@
 //   drew before its vertex stage was vectorized, independently of how vertices are stored.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -200,7 +201,7 @@ struct StageResult {
 
 StageResult run_stage(Isa isa, const Case& c) {
   StageResult result;
-  detail::kernel_table(isa).map_to_screen(c.call(), result.screen, result.report);
+  detail::run_vertex_stage(detail::kernel_table(isa), c.call(), result.screen, result.report);
   return result;
 }
 
@@ -237,6 +238,81 @@ TEST_P(VertexStage, EqualsTheReferenceBitForBit) {
   EXPECT_GT(outside, 100u);
   EXPECT_GT(errors, 50u);
   EXPECT_GT(drawn, 1000u);
+}
+
+// Cut points of [0, count) into `pieces` ranges at random places (some ranges empty).
+std::vector<std::size_t> random_cuts(Random& random, std::size_t count, std::size_t pieces) {
+  std::vector<std::size_t> cuts = {0, count};
+  for (std::size_t i = 1; i < pieces; ++i)
+    cuts.push_back(static_cast<std::size_t>(random.integer(0, count)));
+  std::sort(cuts.begin(), cuts.end());
+  return cuts;
+}
+
+// The stage as draw_indexed_in_ranges() runs it: vertices in ranges, then triangles in ranges,
+// each range's clipped vertices in a screen mesh of its own, numbered on from the mesh's; joined
+// here in range order as that function joins them.
+StageResult run_stage_in_ranges(Isa isa, const Case& c, Random& random) {
+  const detail::KernelTable& kernels = detail::kernel_table(isa);
+  const detail::VertexStageCall call = c.call();
+  const std::size_t vertices = c.positions.size();
+  StageResult result;
+  detail::ScreenMesh& screen = result.screen;
+  detail::start_screen_mesh(call, screen);
+  detail::GrowableArray<std::int32_t> codes(vertices);
+  const std::vector<std::size_t> vertex_cuts =
+      random_cuts(random, vertices, static_cast<std::size_t>(random.integer(1, 5)));
+  for (std::size_t r = 0; r + 1 < vertex_cuts.size(); ++r)
+    detail::map_vertex_range(kernels, call, vertex_cuts[r], vertex_cuts[r + 1], screen,
+                             codes.data());
+  const std::vector<std::size_t> cuts =
+      random_cuts(random, call.triangles, static_cast<std::size_t>(random.integer(1, 5)));
+  std::vector<detail::ScreenMesh> parts(cuts.size() - 1);
+  for (std::size_t r = 0; r < parts.size(); ++r) {
+    parts[r].first_vertex_index = vertices;
+    kernels.assemble_triangles(call, codes.data(), cuts[r], cuts[r + 1], parts[r], result.report);
+  }
+  for (const detail::ScreenMesh& part : parts) {
+    const auto shift = static_cast<std::uint32_t>(screen.positions.size() - vertices);
+    for (std::size_t i = 0; i < part.indices.size(); ++i)
+      screen.indices.push_back(part.indices[i] + (part.indices[i] >= vertices ? shift : 0));
+    for (std::size_t i = 0; i < part.positions.size(); ++i) {
+      screen.positions.push_back(part.positions[i]);
+      screen.depth.push_back(part.depth[i]);
+      screen.clip_w.push_back(part.clip_w[i]);
+      screen.colors.push_back(part.colors[i]);
+      if (c.diffuse) screen.normals.push_back(part.normals[i]);
+      if (c.textured) screen.uvs.push_back(part.uvs[i]);
+    }
+  }
+  return result;
+}
+
+// Ranges of vertices and of triangles cut anywhere (between an ISA's blocks of lanes too) give
+// the whole stage's screen mesh bit for bit, and its counts.
+TEST_P(VertexStage, RangesAssembledApartJoinToTheWholeStage) {
+  Random random(20261129);
+  std::size_t clipped = 0;
+  for (int round = 0; round < 300; ++round) {
+    const Case c = random_case(random, random_vertex_count(random));
+    const StageResult whole = run_stage(isa(), c);
+    const StageResult joined = run_stage_in_ranges(isa(), c, random);
+    const detail::ScreenMesh& e = whole.screen;
+    const detail::ScreenMesh& a = joined.screen;
+    for (const std::string& difference :
+         {first_difference(a.positions, e.positions, "positions"),
+          first_difference(a.depth, e.depth, "depth"),
+          first_difference(a.clip_w, e.clip_w, "clip_w"),
+          first_difference(a.colors, e.colors, "colors"),
+          c.diffuse ? first_difference(a.normals, e.normals, "normals") : std::string(),
+          c.textured ? first_difference(a.uvs, e.uvs, "uvs") : std::string(),
+          first_difference(a.indices, e.indices), compare_reports(joined.report, whole.report)}) {
+      ASSERT_EQ(difference, "") << "round " << round << ", " << c.positions.size() << " vertices, "
+                                << c.indices.size() << " indices";
+    }
+    clipped += whole.report.clipped;
+  }
+  EXPECT_GT(clipped, 50u);  // the clipped vertices' numbering is exercised
 }
 
 TEST_P(VertexStage, EmptyMeshGivesAnEmptyScreenMesh) {
