@@ -10,6 +10,7 @@
 
 #include "benchmarks.hpp"
 #include "scene/obj_loader.hpp"
+#include "scene/procedural.hpp"
 
 namespace edgewise::bench {
 namespace {
@@ -41,8 +42,24 @@ Mat4 framing_transform(const scene::Box3& box) {
          look_at(eye, centre, Vec3{0.0f, 1.0f, 0.0f});
 }
 
+// The built-in default scene (testing/scene/procedural.hpp, edgewise-render's scene), through
+// its own camera.
+MeshScene default_mesh_scene() {
+  scene::Scene built_in = scene::default_scene();
+  const scene::SceneCamera& camera = built_in.camera;
+  MeshScene s;
+  s.name = "default_scene";
+  s.mesh = std::move(built_in.mesh);
+  s.mesh.colors.clear();
+  s.mesh.uvs.clear();
+  s.transform = perspective(camera.vertical_fov_degrees * std::numbers::pi_v<float> / 180.0f,
+                            float(kWidth) / float(kHeight), camera.near_plane, camera.far_plane) *
+                look_at(camera.eye, camera.target, camera.up);
+  return s;
+}
+
 std::vector<MeshScene> load_meshes() {
-  std::vector<MeshScene> scenes;
+  std::vector<MeshScene> scenes = {default_mesh_scene()};
   const char* folder = std::getenv("EDGEWISE_BENCH_MESHES");
   if (folder == nullptr || *folder == '\0') return scenes;
   std::error_code error;

@@ -1,7 +1,8 @@
-// Real meshes for the drawing benchmarks: every OBJ file in the folder named by the environment
-// variable EDGEWISE_BENCH_MESHES (none when it is unset or holds none), loaded through the
-// project's OBJ loader (testing/scene/obj_loader.hpp: polygons triangulated, smooth normals where
-// the file has none), each drawn as a user's mesh is drawn:
+// Real meshes for the drawing benchmarks: the built-in default scene (edgewise-render's, seen
+// through its own camera), then every OBJ file in the folder named by the environment variable
+// EDGEWISE_BENCH_MESHES (none when it is unset or holds none), loaded through the project's OBJ
+// loader (testing/scene/obj_loader.hpp: polygons triangulated, smooth normals where the file has
+// none), each drawn as a user's mesh is drawn:
 // - through a perspective camera (45 degree vertical field of view, 1920x1080) looking at the
 //   centre of the mesh's box from a fixed oblique direction, far enough that the box's bounding
 //   sphere just fits the screen's height, near and far planes around that sphere;
@@ -20,13 +21,13 @@
 namespace edgewise::bench {
 
 struct MeshScene {
-  std::string name;  // the file's name without ".obj"
+  std::string name;  // the file's name without ".obj", or default_scene
   scene::Mesh mesh;  // indexed, with normals
   Mat4 transform;    // object space to clip space
 };
 
-// The meshes, sorted by name, loaded on first use. Files that do not load are reported on
-// standard error and left out.
+// The default scene, then the meshes sorted by name, loaded on first use. Files that do not load
+// are reported on standard error and left out.
 std::span<const MeshScene> mesh_scenes();
 
 // The meshes' draw() settings (see the top of this file) on `isa`, one thread.
