@@ -205,6 +205,24 @@ StageResult run_stage(Isa isa, const Case& c) {
   return result;
 }
 
+// The first difference between two results of case `c`'s stage (its screen mesh, bit for bit,
+// and its counts), or "" when there is none.
+std::string first_difference(const Case& c, const StageResult& actual,
+                             const StageResult& expected) {
+  const detail::ScreenMesh& a = actual.screen;
+  const detail::ScreenMesh& e = expected.screen;
+  for (std::string difference :
+       {first_difference(a.positions, e.positions, "positions"),
+        first_difference(a.depth, e.depth, "depth"), first_difference(a.clip_w, e.clip_w, "clip_w"),
+        first_difference(a.colors, e.colors, "colors"),
+        c.diffuse ? first_difference(a.normals, e.normals, "normals") : std::string(),
+        c.textured ? first_difference(a.uvs, e.uvs, "uvs") : std::string(),
+        first_difference(a.indices, e.indices), compare_reports(actual.report, expected.report)}) {
+    if (!difference.empty()) return difference;
+  }
+  return {};
+}
+
 using VertexStage = IsaTest;
 
 TEST_P(VertexStage, EqualsTheReferenceBitForBit) {
@@ -214,20 +232,10 @@ TEST_P(VertexStage, EqualsTheReferenceBitForBit) {
     const Case c = random_case(random, random_vertex_count(random));
     const StageResult expected = run_stage(Isa::reference, c);
     const StageResult actual = run_stage(isa(), c);
+    ASSERT_EQ(first_difference(c, actual, expected), "")
+        << "round " << round << ", " << c.positions.size() << " vertices, " << c.indices.size()
+        << " indices";
     const detail::ScreenMesh& e = expected.screen;
-    const detail::ScreenMesh& a = actual.screen;
-    for (const std::string& difference :
-         {first_difference(a.positions, e.positions, "positions"),
-          first_difference(a.depth, e.depth, "depth"),
-          first_difference(a.clip_w, e.clip_w, "clip_w"),
-          first_difference(a.colors, e.colors, "colors"),
-          c.diffuse ? first_difference(a.normals, e.normals, "normals") : std::string(),
-          c.textured ? first_difference(a.uvs, e.uvs, "uvs") : std::string(),
-          first_difference(a.indices, e.indices),
-          compare_reports(actual.report, expected.report)}) {
-      ASSERT_EQ(difference, "") << "round " << round << ", " << c.positions.size() << " vertices, "
-                                << c.indices.size() << " indices";
-    }
     clipped += expected.report.clipped;
     outside += expected.report.outside;
     errors += expected.report.errors;
@@ -297,19 +305,9 @@ TEST_P(VertexStage, RangesAssembledApartJoinToTheWholeStage) {
     const Case c = random_case(random, random_vertex_count(random));
     const StageResult whole = run_stage(isa(), c);
     const StageResult joined = run_stage_in_ranges(isa(), c, random);
-    const detail::ScreenMesh& e = whole.screen;
-    const detail::ScreenMesh& a = joined.screen;
-    for (const std::string& difference :
-         {first_difference(a.positions, e.positions, "positions"),
-          first_difference(a.depth, e.depth, "depth"),
-          first_difference(a.clip_w, e.clip_w, "clip_w"),
-          first_difference(a.colors, e.colors, "colors"),
-          c.diffuse ? first_difference(a.normals, e.normals, "normals") : std::string(),
-          c.textured ? first_difference(a.uvs, e.uvs, "uvs") : std::string(),
-          first_difference(a.indices, e.indices), compare_reports(joined.report, whole.report)}) {
-      ASSERT_EQ(difference, "") << "round " << round << ", " << c.positions.size() << " vertices, "
-                                << c.indices.size() << " indices";
-    }
+    ASSERT_EQ(first_difference(c, joined, whole), "")
+        << "round " << round << ", " << c.positions.size() << " vertices, " << c.indices.size()
+        << " indices";
     clipped += whole.report.clipped;
   }
   EXPECT_GT(clipped, 50u);  // the clipped vertices' numbering is exercised

@@ -27,40 +27,33 @@ class MaskSink final : public CoverageSink {
   std::vector<std::uint32_t>& samples_;
 };
 
+// Each pixel's area into the image through `combine(value, area)`: added, or composited.
+template <class Combine>
 class AreaImageSink final : public AreaSink {
  public:
-  explicit AreaImageSink(CoverageImage& image) : image_(image) {}
+  AreaImageSink(CoverageImage& image, Combine combine) : image_(image), combine_(combine) {}
   void consume(std::span<const AreaTile> tiles) override {
     for (const AreaTile& tile : tiles) {
       for (int bit = 0; bit < 64; ++bit) {
         const int x = tile.tile_x * 8 + bit % 8, y = tile.tile_y * 8 + bit / 8;
-        image_[static_cast<std::size_t>(y) * kAaSize + x] += tile.area[bit];
+        combine_(image_[static_cast<std::size_t>(y) * kAaSize + x], tile.area[bit]);
       }
     }
   }
 
  private:
   CoverageImage& image_;
+  Combine combine_;
 };
 
-// Coverage-weighted blending of one triangle's areas over the image ("over"):
-// alpha += area (1 - alpha).
-class CompositingSink final : public AreaSink {
- public:
-  explicit CompositingSink(CoverageImage& alpha) : alpha_(alpha) {}
-  void consume(std::span<const AreaTile> tiles) override {
-    for (const AreaTile& tile : tiles) {
-      for (int bit = 0; bit < 64; ++bit) {
-        const int x = tile.tile_x * 8 + bit % 8, y = tile.tile_y * 8 + bit / 8;
-        double& alpha = alpha_[static_cast<std::size_t>(y) * kAaSize + x];
-        alpha += tile.area[bit] * (1.0 - alpha);
-      }
-    }
-  }
+void add_area(double& value, double area) {
+  value += area;
+}
 
- private:
-  CoverageImage& alpha_;
-};
+// Coverage-weighted blending of one triangle's area over the image ("over").
+void composite_area(double& alpha, double area) {
+  alpha += area * (1.0 - alpha);
+}
 
 const RasterTarget kTarget{kAaSize, kAaSize, std::nullopt};
 
@@ -79,7 +72,7 @@ CoverageImage coverage_image(std::span<const Vec2> triangles, int mode, Isa isa)
   options.isa = isa;
   CoverageImage image(static_cast<std::size_t>(kAaSize) * kAaSize, 0.0);
   if (kAaSamples[mode] == 0) {
-    AreaImageSink sink(image);
+    AreaImageSink sink(image, add_area);
     rasterize_areas(triangles, {}, kTarget, options, sink);
     return image;
   }
@@ -96,7 +89,7 @@ CoverageImage truth_image(std::span<const Vec2> triangles) {
   CoverageImage image(static_cast<std::size_t>(kAaSize) * kAaSize, 0.0);
   RasterOptions options;
   options.isa = Isa::reference;
-  AreaImageSink sink(image);
+  AreaImageSink sink(image, add_area);
   rasterize_areas(triangles, {}, kTarget, options, sink);
   return image;
 }
@@ -174,7 +167,7 @@ CoverageImage composited_areas(std::span<const Vec2> triangles, Isa isa) {
   CoverageImage alpha(static_cast<std::size_t>(kAaSize) * kAaSize, 0.0);
   RasterOptions options;
   options.isa = isa;
-  CompositingSink sink(alpha);
+  AreaImageSink sink(alpha, composite_area);
   for (std::size_t t = 0; 3 * t < triangles.size(); ++t)
     rasterize_areas(triangles.subspan(3 * t, 3), {}, kTarget, options, sink);
   return alpha;
