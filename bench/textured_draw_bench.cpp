@@ -12,8 +12,11 @@
 // AVX2 (or NEON) runs every filter with both methods; the other ISAs bilinear, trilinear and
 // anisotropic with quad derivatives; the reference bilinear and trilinear on a quarter of the
 // screen (its scissor), as it takes about a second per full frame.
+// TexturedDraw/<isa>/threads:all/<filter>/quad: bilinear, trilinear and anisotropic on every
+// core (wall-clock time), for every vectorized ISA.
 #include <benchmark/benchmark.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -26,9 +29,10 @@ namespace edgewise::bench {
 namespace {
 
 void textured_draw(benchmark::State& state, Isa isa, TextureFilter filter,
-                   TextureDerivatives derivatives) {
+                   TextureDerivatives derivatives, std::size_t threads) {
   const texture_scene::ViewMesh& mesh = ground_plane_mesh();
   DrawOptions options = ground_plane_options(isa, filter, derivatives);
+  options.threads = threads;
   std::uint64_t pixels = static_cast<std::uint64_t>(kWidth) * kHeight;
   if (isa == Isa::reference) {
     options.scissor = PixelRect{0, 0, kWidth / 2, kHeight / 2};
@@ -76,8 +80,16 @@ void register_textured_draw_benchmarks() {
         const std::string name = "TexturedDraw/" + std::string(name_of(isa)) + "/" +
                                  std::string(name_of(filter)) + "/" +
                                  std::string(name_of(derivatives));
-        benchmark::RegisterBenchmark(name.c_str(), textured_draw, isa, filter, derivatives)
+        benchmark::RegisterBenchmark(name.c_str(), textured_draw, isa, filter, derivatives,
+                                     std::size_t{1})
             ->Unit(benchmark::kMillisecond);
+        if (isa == Isa::reference || !common || derivatives != TextureDerivatives::quad) continue;
+        const std::string all = "TexturedDraw/" + std::string(name_of(isa)) + "/threads:all/" +
+                                std::string(name_of(filter)) + "/quad";
+        benchmark::RegisterBenchmark(all.c_str(), textured_draw, isa, filter, derivatives,
+                                     std::size_t{0})
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
       }
     }
   }
