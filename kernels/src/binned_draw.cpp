@@ -71,8 +71,8 @@ void add_vertex_counts(DrawReport& report, std::span<const DrawReport> ranges) {
   }
 }
 
-// Triangles [first, last) of screen mesh `screen` (first_vertex_index 0), as the binning and
-// the coverage kernels take them.
+// The `triangles` triangles of `indices` (three each) into the vertices of screen mesh `screen`
+// (first_vertex_index 0), as the binning and the coverage kernels take them.
 TriangleBatch screen_triangles(const Framebuffer& target, const ScreenMesh& screen,
                                const std::uint32_t* indices, std::size_t triangles,
                                const PixelRect& clip, CullMode cull) {

@@ -3,12 +3,13 @@
 #include <png.h>
 
 #include <algorithm>
-#include <cctype>
 #include <csetjmp>
 #include <cstdint>
 #include <new>
 #include <stdexcept>
 #include <string>
+
+#include "common/file_extension.hpp"
 
 namespace edgewise::tools {
 namespace {
@@ -73,12 +74,7 @@ bool write_png(png_structp png, png_infop info, const ImagePixels& image, png_by
 }  // namespace
 
 bool is_png_path(const std::string& path) {
-  const std::size_t dot = path.find_last_of("./");
-  if (dot == std::string::npos || path[dot] != '.') return false;
-  std::string extension = path.substr(dot + 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == "png";
+  return lower_case_extension(path) == ".png";
 }
 
 std::vector<unsigned char> encode_png(const ImagePixels& image) {

@@ -1,32 +1,17 @@
 #include "render/image_writer.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <vector>
 
+#include "common/file_extension.hpp"
 #include "common/image_file.hpp"
 #include "common/usage_error.hpp"
 
 namespace edgewise::render_tool {
 namespace {
 
-// Where the extension starts in `path` (at its last '.' after the last '/'); path.size() if none.
-std::size_t extension_start(std::string_view path) {
-  const std::size_t slash = path.find_last_of('/');
-  const std::size_t dot = path.find_last_of('.');
-  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) {
-    return path.size();
-  }
-  return dot;
-}
-
-std::string lower_case_extension(std::string_view path) {
-  std::string extension(path.substr(extension_start(path)));
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
+using tools::extension_start;
+using tools::lower_case_extension;
 
 void write_png(const std::string& path, const Framebuffer& framebuffer) {
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(framebuffer.width()) *
