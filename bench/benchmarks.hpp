@@ -20,6 +20,11 @@ void register_clip_benchmarks();
 // ShadingMethod/<isa>/<method>/<perspective>/area:<px>, for every supported ISA and the reference.
 void register_draw_benchmarks();
 
+// Resolve/<isa>/<filter>/<linear|srgb>/<threads:1|threads:all>/msaa4/1280x720[/real_time]:
+// resolve() of a 4x multisampled frame, and Resolve/read_samples_once/msaa4/1280x720, the time to
+// read its samples once.
+void register_resolve_benchmarks();
+
 // Sample/<isa>/<filter>/<stream> for every supported ISA and the reference, and
 // SamplePeer/oiio/<mode>/<stream> (OpenImageIO's TextureSystem) when it is built in.
 void register_sample_benchmarks();

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   edgewise::bench::register_area_benchmarks();
   edgewise::bench::register_clip_benchmarks();
   edgewise::bench::register_draw_benchmarks();
+  edgewise::bench::register_resolve_benchmarks();
 #if defined(EDGEWISE_BENCH_SAMPLING)
   edgewise::bench::register_sample_benchmarks();
   edgewise::bench::register_textured_draw_benchmarks();

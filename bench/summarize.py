@@ -79,6 +79,8 @@ MULTISAMPLE_NAME = re.compile(r"^Multisample/(?P<isa>[a-z0-9_]+)/samples:(?P<sam
                               r"area:(?P<area>\d+)$")
 # The drawing peer's multisampled workloads: area:<px>/samples:<n> (bench/draw_peer_workloads.hpp).
 PEER_MULTISAMPLE_WORKLOAD = re.compile(r"^area:(?P<area>\d+)/samples:(?P<samples>\d+)$")
+RESOLVE_NAME = re.compile(r"^Resolve/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z]+)/(?P<encoding>linear|srgb)/"
+                          r"threads:(?P<threads>1|all)/msaa4/1280x720(/real_time)?$")
 MESH_DRAW_NAME = re.compile(r"^MeshDraw/(?P<isa>[a-z0-9_]+)/(?P<threads>threads:all/)?"
                             r"(?P<mesh>[^/]+?)(/real_time)?$")
 # The drawing peer's workloads: the edgewise benchmark each repeats (bench/draw_peer_workloads.hpp)
@@ -605,6 +607,43 @@ def print_meshes(meshes, draw_peers):
           "edgewise 1 thread: CPU time; all cores: wall-clock time")
 
 
+def print_resolve(resolves, read_once):
+    """resolve() of a 4x 1280x720 frame: ms per call per ISA, filter, encoding and thread count,
+    the speed-up over the reference, the time over the time to read the samples once, and the box
+    resolve's target (at most 2 ms, and within 2x of reading the samples once)."""
+    floor = seconds(read_once, "cpu_time")
+    print("resolve() of a 4x multisampled 1280x720 frame (Resolve/): ms per call; "
+          f"read once: the time to read its samples once ({floor * 1e3:.3f} ms)" if floor else
+          "resolve() of a 4x multisampled 1280x720 frame (Resolve/): ms per call")
+    header = ["filter", "encoding", "ISA", "threads", "ms", "cv", "vs reference", "/ read once"]
+    rows = []
+    keys = sorted(resolves, key=lambda k: (["box", "tent", "mitchell"].index(k[0])
+                                           if k[0] in ("box", "tent", "mitchell") else 3,
+                                           k[1], isa_key(k[2]), k[3] != "1"))
+    best_box = None
+    for filter_name, encoding, isa, threads in keys:
+        entry = resolves[(filter_name, encoding, isa, threads)]
+        if "error" in entry:
+            rows.append([filter_name, encoding, isa, threads, "ERROR: " + entry["error"], "", "", ""])
+            continue
+        time = seconds(entry, "cpu_time" if threads == "1" else "real_time")
+        reference = seconds(resolves.get((filter_name, encoding, "reference", "1")), "cpu_time")
+        rows.append([filter_name, encoding, isa, threads, f"{time * 1e3:.3f}", cv_cell(entry),
+                     ratio(reference, time) if reference else "-",
+                     ratio(time, floor) if floor else "-"])
+        if filter_name == "box" and encoding == "linear" and threads == "1" and isa != "reference":
+            if best_box is None or time < best_box[1]:
+                best_box = (isa, time)
+    print_table(header, rows)
+    if best_box:
+        isa, time = best_box
+        met = time <= 2e-3 and (floor is None or time <= 2 * floor)
+        print(f"target, box 4x 1280x720 on one thread at most 2 ms and within 2x of read once: "
+              f"{isa} {time * 1e3:.3f} ms" + (f", {time / floor:.2f}x read once" if floor else "") +
+              (" -- met" if met else " -- NOT met"))
+    print("one thread: CPU time; all: wall-clock time of the call on every core")
+
+
 def main(argv):
     if len(argv) < 2:
         print(__doc__.strip(), file=sys.stderr)
@@ -637,11 +676,15 @@ def main(argv):
                           lambda m: (int(m["area"]), int(m["samples"]), m["isa"]))
     meshes = collect(results, MESH_DRAW_NAME,
                      lambda m: (m["mesh"], m["isa"], m["threads"] is not None))
+    resolves = collect(results, RESOLVE_NAME,
+                       lambda m: (m["filter"], m["encoding"], m["isa"], m["threads"]))
+    read_once = next((e for n, e in results.items() if n.startswith("Resolve/read_samples_once/")),
+                     None)
     clear = next((e for n, e in results.items() if n.startswith("Clear/")), None)
     if not (coverage or areas or shading or methods or samples or draws or draw_peers or
-            multisample or meshes):
+            multisample or meshes or resolves):
         print(f"{', '.join(argv[1:])}: no Coverage/*, Area/*, Shading/*, ShadingMethod/*, Sample/*, "
-              "TexturedDraw/*, Multisample/* or DrawPeer/* benchmarks", file=sys.stderr)
+              "TexturedDraw/*, Multisample/*, Resolve/* or DrawPeer/* benchmarks", file=sys.stderr)
         return 1
 
     for title_printer, found, args in ((print_coverage, coverage, (coverage, clear)),
@@ -655,7 +698,8 @@ def main(argv):
                                         (draw_peers, shading, draws)),
                                        (print_multisample, multisample,
                                         (multisample, draw_peers)),
-                                       (print_meshes, meshes, (meshes, draw_peers))):
+                                       (print_meshes, meshes, (meshes, draw_peers)),
+                                       (print_resolve, resolves, (resolves, read_once))):
         if found:
             print()
             title_printer(*args)

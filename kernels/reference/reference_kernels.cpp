@@ -11,6 +11,7 @@
 #include "../src/kernel_table.hpp"
 #include "coverage_reference.hpp"
 #include "pixel_area_reference.hpp"
+#include "resolve_reference.hpp"
 #include "sample_reference.hpp"
 #include "vertex_stage_reference.hpp"
 
@@ -130,7 +131,8 @@ const detail::KernelTable& kernel_table() {
       Isa::reference,           &rasterize,
       &count_coverage,          &transform_vertices,
       &reference::map_vertices, &reference::assemble_triangles,
-      &reference::shade,        &sample,
+      &reference::shade,        &reference::resolve_box,
+      &reference::resolve_taps, &sample,
       &sample_fields,           &rasterize_areas};
   return table;
 }

@@ -1,5 +1,5 @@
 // The kernels every ISA defines in its own namespace, one translation unit per capability
-// (kernels/isa/coverage.cpp, draw.cpp, sample.cpp), gathered into its table by
+// (kernels/isa/coverage.cpp, draw.cpp, resolve.cpp, sample.cpp), gathered into its table by
 // kernels/isa/kernel_table.cpp. Included after isa_build.hpp.
 #pragma once
 
@@ -25,6 +25,11 @@ void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t*
                         std::size_t first, std::size_t last, detail::ScreenMesh& out,
                         DrawReport& report);
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
+
+// resolve.cpp
+void resolve_box(const detail::ResolveCall& call, std::int32_t first_tile_row,
+                 std::int32_t last_tile_row);
+void resolve_taps(const detail::ResolveCall& call, std::int32_t first_row, std::int32_t last_row);
 
 // sample.cpp
 void sample(const detail::TextureDescription& texture, const SamplerOptions& options,

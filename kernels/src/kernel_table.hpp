@@ -12,6 +12,7 @@
 #include "edgewise/multisample.hpp"
 #include "edgewise/pixel_area.hpp"
 #include "isa_list.hpp"
+#include "resolve_call.hpp"
 #include "sample_kernels.hpp"
 
 namespace edgewise {
@@ -58,6 +59,11 @@ struct KernelTable {
                              std::size_t first, std::size_t last, ScreenMesh& out,
                              DrawReport& report);
   void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
+  // Resolving (resolve.hpp): the box filter at factor 1, output rows [8 first, 8 last); tent and
+  // Mitchell, output rows [first, last).
+  void (*resolve_box)(const ResolveCall& call, std::int32_t first_tile_row,
+                      std::int32_t last_tile_row);
+  void (*resolve_taps)(const ResolveCall& call, std::int32_t first_row, std::int32_t last_row);
   // Sampling (sample.hpp): queries and results as records, or as one array per field.
   SampleKernel sample;
   SampleFieldsKernel sample_fields;

@@ -2,37 +2,39 @@
 //
 // The source's samples repeat with the output pixels: the output pixel at (x, y) sees source
 // pixel (f x + i, f y + j), sample k, at the same distance for every (x, y). So the filter's
-// taps, each (i, j, k) with its normalized weight, are found once per call, and each output
-// pixel is a sum over them; only pixels near the image's edges clamp the source coordinates.
+// taps, each (i, j, k) with its normalized weight, are found once per call, and the kernels
+// (resolve_call.hpp) sum over them, bands of output rows on the call's threads.
 #include "edgewise/resolve.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "edgewise/multisample.hpp"
 #include "edgewise/texture.hpp"
+#include "kernel_table.hpp"
+#include "parallel.hpp"
+#include "resolve_call.hpp"
 
 namespace edgewise {
 namespace {
 
-struct Tap {
-  std::int32_t i, j;  // source pixel offset from the output pixel's first source pixel
-  std::int32_t sample;
-  float weight;
-};
+using detail::KernelTable;
+using detail::ResolveTap;
 
 // The taps of every output pixel, weights summing to 1.
-std::vector<Tap> filter_taps(ResolveFilter filter, int factor,
-                             std::span<const SampleOffset> pattern) {
+std::vector<ResolveTap> filter_taps(ResolveFilter filter, int factor,
+                                    std::span<const SampleOffset> pattern) {
   const double radius = filter_radius(filter);
   // Source pixels whose samples may lie within the radius: their centres within radius + 1/2
   // output pixels (a sample is at most half a source pixel from its centre).
   const auto reach = static_cast<std::int32_t>(std::ceil((radius + 0.5) * factor)) + 1;
-  std::vector<Tap> taps;
+  std::vector<ResolveTap> taps;
   double total = 0.0;
   for (std::int32_t j = -reach; j < factor + reach; ++j) {
     for (std::int32_t i = -reach; i < factor + reach; ++i) {
@@ -46,101 +48,65 @@ std::vector<Tap> filter_taps(ResolveFilter filter, int factor,
       }
     }
   }
-  for (Tap& tap : taps)
+  for (ResolveTap& tap : taps)
     tap.weight = static_cast<float>(tap.weight / total);
   return taps;
 }
 
-// The 8-bit code of a linear value in [0, 1]: linear, or its sRGB encoding, rounded to nearest.
-class Encoder {
- public:
-  explicit Encoder(bool srgb) : srgb_(srgb) {
-    // Code c is the nearest when the value's encoding lies in [(c - 1/2) / 255, (c + 1/2) / 255):
-    // thresholds[c] is the linear value where code c + 1 begins.
-    for (int c = 0; c < 255 && srgb; ++c)
-      thresholds_[c] = static_cast<float>(srgb_to_linear((c + 0.5) / 255.0));
-  }
-  bool srgb() const { return srgb_; }
-  std::uint8_t operator()(float v, bool colour) const {
-    const float clamped = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // NaN: 0
-    if (!srgb_ || !colour) return static_cast<std::uint8_t>(std::lrint(clamped * 255.0f));
-    return static_cast<std::uint8_t>(
-        std::upper_bound(thresholds_.begin(), thresholds_.end(), clamped) - thresholds_.begin());
-  }
-
- private:
-  bool srgb_;
-  std::array<float, 255> thresholds_{};
-};
-
-// The box filter: every output pixel is the plain mean of the f x f x samples samples of its own
-// source block (each standard offset lies inside its pixel: weights equal, none outside), summed
-// exactly in integers, two channels per 64-bit word (each sum at most 255 f^2 samples, far below
-// 2^32 for any target that fits in memory), and rounded to nearest.
-void resolve_box(const Framebuffer& source, int f, std::span<std::uint8_t> rgba,
-                 const Encoder& encode) {
-  const std::int32_t width = source.width() / f, height = source.height() / f;
+// The box filter with supersampling: every output pixel is the plain mean of the f x f x samples
+// samples of its own source block (each standard offset lies inside its pixel: weights equal,
+// none outside), summed exactly in integers, two channels per 64-bit word (each sum at most
+// 255 f^2 samples, far below 2^32 for any target that fits in memory), and rounded to nearest.
+// Output rows [first_row, last_row).
+void resolve_box_blocks(const detail::ResolveCall& call, std::int32_t first_row,
+                        std::int32_t last_row) {
+  const std::int32_t f = call.factor;
   const auto count = static_cast<std::uint64_t>(f) * static_cast<std::uint64_t>(f) *
-                     static_cast<std::uint64_t>(source.samples());
+                     static_cast<std::uint64_t>(call.samples);
   const float scale = 1.0f / (255.0f * static_cast<float>(count));
   const double inverse = 1.0 / static_cast<double>(count);
-  // The mean rounded to nearest (within 2^-40 of the exact quotient: only a mean of exactly a
-  // half may round either way), or sRGB-encoded.
-  const auto write = [&](std::int32_t x, std::int32_t y, const std::uint64_t(&sums)[4]) {
-    std::uint8_t* out = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
-    for (int k = 0; k < 4; ++k) {
-      out[k] = encode.srgb() && k < 3
-                   ? encode(static_cast<float>(sums[k]) * scale, true)
-                   : static_cast<std::uint8_t>(static_cast<double>(sums[k]) * inverse + 0.5);
-    }
-  };
-  if (f == 1) {
-    // A tile at a time: its samples' planes are consecutive (framebuffer.hpp), so the sums run
-    // over contiguous pixels, R and B in the two 16-bit halves of one lane, G and A of another
-    // (at most 16 samples of 255 each: below 2^16).
-    const std::uint32_t* tiles = source.color_tiles();
-    const auto samples = static_cast<std::size_t>(source.samples());
-    for (std::int32_t ty = 0; ty < source.tiles_y(); ++ty) {
-      for (std::int32_t tx = 0; tx < source.tiles_x(); ++tx) {
-        const std::uint32_t* tile =
-            tiles + (static_cast<std::size_t>(ty) * source.tiles_x() + tx) * samples * 64;
-        std::uint32_t red_blue[64] = {}, green_alpha[64] = {};
-        for (std::size_t k = 0; k < samples; ++k) {
-          for (std::size_t p = 0; p < 64; ++p) {
-            const std::uint32_t c = tile[k * 64 + p];
-            red_blue[p] += c & 0x00FF00FFu;
-            green_alpha[p] += (c >> 8) & 0x00FF00FFu;
-          }
-        }
-        for (std::int32_t p = 0; p < 64; ++p) {
-          const std::int32_t x = tx * 8 + p % 8, y = ty * 8 + p / 8;
-          if (x >= width || y >= height) continue;
-          const std::uint64_t sums[4] = {red_blue[p] & 0xFFFFu, green_alpha[p] & 0xFFFFu,
-                                         red_blue[p] >> 16, green_alpha[p] >> 16};
-          write(x, y, sums);
-        }
-      }
-    }
-    return;
-  }
-  for (std::int32_t y = 0; y < height; ++y) {
-    for (std::int32_t x = 0; x < width; ++x) {
+  for (std::int32_t y = first_row; y < last_row; ++y) {
+    for (std::int32_t x = 0; x < call.width; ++x) {
       // Channels R and B in the low and high 32 bits of `even`, G and A of `odd`.
       std::uint64_t even = 0, odd = 0;
       for (std::int32_t j = 0; j < f; ++j) {
         for (std::int32_t i = 0; i < f; ++i) {
-          for (int k = 0; k < source.samples(); ++k) {
-            const std::uint64_t c = source.color(x * f + i, y * f + j, k);
+          for (std::int32_t k = 0; k < call.samples; ++k) {
+            const std::uint64_t c = call.color(x * f + i, y * f + j, k);
             even += (c & 0xFF) | (c & 0xFF0000) << 16;
             odd += (c >> 8 & 0xFF) | (c >> 24 & 0xFF) << 32;
           }
         }
       }
       const std::uint64_t sums[4] = {even & 0xFFFFFFFF, odd & 0xFFFFFFFF, even >> 32, odd >> 32};
-      write(x, y, sums);
+      // The mean rounded to nearest (within 2^-40 of the exact quotient: only a mean of exactly a
+      // half may round either way), or sRGB-encoded.
+      std::uint8_t* out = call.rgba + (static_cast<std::size_t>(y) * call.width + x) * 4;
+      for (int k = 0; k < 4; ++k) {
+        out[k] = call.srgb && k < 3
+                     ? detail::encode_resolved(static_cast<float>(sums[k]) * scale, true)
+                     : static_cast<std::uint8_t>(static_cast<double>(sums[k]) * inverse + 0.5);
+      }
     }
   }
 }
+
+// The code of every channel sum of a pixel's samples under the box filter (factor 1), as the
+// reference encodes it.
+std::vector<std::uint8_t> box_colour_codes(int samples, bool srgb) {
+  const float scale = 1.0f / (255.0f * static_cast<float>(samples));
+  const double inverse = 1.0 / static_cast<double>(samples);
+  std::vector<std::uint8_t> codes(static_cast<std::size_t>(255 * samples + 1));
+  for (std::size_t sum = 0; sum < codes.size(); ++sum) {
+    codes[sum] = srgb ? detail::encode_resolved(static_cast<float>(sum) * scale, true)
+                      : static_cast<std::uint8_t>(static_cast<double>(sum) * inverse + 0.5);
+  }
+  return codes;
+}
+
+// Bands of output rows per task: whole tile rows (the box reads a tile row's samples at once),
+// enough per band that the filtered kernels' plane rows are mostly made once.
+constexpr std::int32_t kBandRows = 32;
 
 }  // namespace
 
@@ -195,34 +161,51 @@ void resolve(const Framebuffer& source, std::span<std::uint8_t> rgba,
     throw std::invalid_argument("resolve: the span holds " + std::to_string(rgba.size()) +
                                 " bytes, not " + std::to_string(bytes));
   }
-  const Encoder encode(options.srgb);
-  if (options.filter == ResolveFilter::box) return resolve_box(source, f, rgba, encode);
-  const std::vector<Tap> taps =
-      filter_taps(options.filter, f, standard_sample_pattern(source.samples()));
-  std::int32_t reach = 0;  // the farthest tap from the output pixel's own source pixels
-  for (const Tap& tap : taps)
-    reach = std::max({reach, -tap.i, -tap.j, tap.i - (f - 1), tap.j - (f - 1)});
-  for (std::int32_t y = 0; y < height; ++y) {
-    for (std::int32_t x = 0; x < width; ++x) {
-      const bool interior = x * f - reach >= 0 && y * f - reach >= 0 &&
-                            x * f + f - 1 + reach < source.width() &&
-                            y * f + f - 1 + reach < source.height();
-      float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-      for (const Tap& tap : taps) {
-        std::int32_t sx = x * f + tap.i, sy = y * f + tap.j;
-        if (!interior) {
-          sx = std::clamp(sx, 0, source.width() - 1);
-          sy = std::clamp(sy, 0, source.height() - 1);
-        }
-        const std::uint32_t c = source.color(sx, sy, tap.sample);
-        for (int k = 0; k < 4; ++k)
-          sum[k] += tap.weight * static_cast<float>((c >> (8 * k)) & 0xFF);
-      }
-      std::uint8_t* out = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
-      for (int k = 0; k < 4; ++k)
-        out[k] = encode(sum[k] * (1.0f / 255.0f), k < 3);
+  if (options.srgb) detail::srgb_code_cells();  // made once, before the tasks share it
+  const KernelTable& kernels = detail::kernel_table(resolve_isa(options.isa));
+  const detail::Workers workers =
+      detail::resolve_workers(options.threads, options.executor, "resolve");
+  detail::ResolveCall call{source.color_tiles(),
+                           source.tiles_x(),
+                           source.width(),
+                           source.height(),
+                           source.samples(),
+                           f,
+                           width,
+                           height,
+                           rgba.data(),
+                           options.srgb,
+                           &detail::srgb_code_cells(),
+                           {},
+                           {}};
+  const std::size_t bands = static_cast<std::size_t>((height + kBandRows - 1) / kBandRows);
+  const auto band_rows = [&](std::size_t band) {
+    const auto first = static_cast<std::int32_t>(band) * kBandRows;
+    return std::pair{first, std::min(first + kBandRows, height)};
+  };
+  if (options.filter == ResolveFilter::box) {
+    if (f > 1) {
+      workers.run(bands, [&](std::size_t band) {
+        const auto [first, last] = band_rows(band);
+        resolve_box_blocks(call, first, last);
+      });
+      return;
     }
+    const std::vector<std::uint8_t> codes = box_colour_codes(source.samples(), options.srgb);
+    call.colour_codes = codes;
+    workers.run(bands, [&](std::size_t band) {
+      const auto [first, last] = band_rows(band);
+      kernels.resolve_box(call, first / 8, (last + 7) / 8);
+    });
+    return;
   }
+  const std::vector<ResolveTap> taps =
+      filter_taps(options.filter, f, standard_sample_pattern(source.samples()));
+  call.taps = taps;
+  workers.run(bands, [&](std::size_t band) {
+    const auto [first, last] = band_rows(band);
+    kernels.resolve_taps(call, first, last);
+  });
 }
 
 }  // namespace edgewise

@@ -10,15 +10,21 @@
 // centre in output pixels; the weights of each output pixel are normalized to sum to 1. Samples
 // beyond the image repeat its edge pixels. R, G, B and A are filtered alike (unpremultiplied).
 //
+// Every ISA gives the scalar reference's image bit for bit.
+//
 // Thread safety: resolve() only reads the source; calls may run at once on one source.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 
 #include "edgewise/framebuffer.hpp"
+#include "edgewise/isa.hpp"
 #include "edgewise/names.hpp"
+#include "edgewise/threads.hpp"
 
 namespace edgewise {
 
@@ -37,12 +43,19 @@ struct ResolveOptions {
   // The output's R, G and B encoded as sRGB (IEC 61966-2-1), else linear like the framebuffer;
   // alpha stays linear.
   bool srgb = false;
+  std::optional<Isa> isa;  // default: active_isa()
+  // Threads (threads.hpp): 0 takes default_thread_count(), 1 resolves on the calling thread
+  // alone; bands of output rows run apart, and the image is the same bit for bit for every count.
+  std::size_t threads = 0;
+  // Runs the call's tasks on those threads; empty: oneTBB's (threads.hpp states the contract).
+  TaskExecutor executor;
 };
 
 // Writes the resolved image, row-major, 4 bytes (R, G, B, A) per pixel, each value the filtered
 // one clamped to [0, 1] and rounded to nearest. Throws std::invalid_argument for a
-// supersampling factor below 1 or one that divides neither side exactly, or a span that is not
-// (width / factor) * (height / factor) * 4 bytes.
+// supersampling factor below 1 or one that divides neither side exactly, a span that is not
+// (width / factor) * (height / factor) * 4 bytes, an ISA this CPU lacks, or more threads than
+// kMaxThreads.
 void resolve(const Framebuffer& source, std::span<std::uint8_t> rgba,
              const ResolveOptions& options = {});
 

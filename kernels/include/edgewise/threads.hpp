@@ -1,4 +1,4 @@
-// How many threads draw() and count_coverage() use, and who runs them.
+// How many threads draw(), count_coverage() and resolve() use, and who runs them.
 //
 // A call with more than one thread sorts its triangles into screen bins and rasterizes each bin
 // on one thread (docs/DESIGN.md, "Threads"). Its results (framebuffer, counts, statuses) are
