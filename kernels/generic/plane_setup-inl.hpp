@@ -61,14 +61,15 @@ struct PlaneGroup {
   ColourPlane colour[kShadingPlanes][kLanes];  // colour, then normal planes
 };
 
-// Sets up the lanes of `in`: depth slopes always, colour planes when `colour_planes`, normal
-// planes too when `normal_planes`. With `perspective_correct`, a lane's colour and normal are
-// perspective-correct when its three w are usable (kMinClipW <= w <= kMaxClipW) and not all
-// equal, as the scalar shading decides.
+// Sets up the lanes of `in`: depth slopes always, colour planes when `colour_planes` (all but
+// the R, G, B, A and 1 / w planes themselves without `colour_values`: for lanes whose colour
+// is used as it is), normal planes too when `normal_planes`. With `perspective_correct`, a lane's
+// colour and normal are perspective-correct when its three w are usable (kMinClipW <= w <=
+// kMaxClipW) and not all equal, as the scalar shading decides.
 template <class Arch>
 inline void set_up_plane_group(const PlaneGroupInput<Arch>& in, bool colour_planes,
-                               bool normal_planes, bool perspective_correct,
-                               PlaneGroup<Arch>& out) {
+                               bool normal_planes, bool perspective_correct, PlaneGroup<Arch>& out,
+                               bool colour_values = true) {
   using D = xsimd::batch<double, Arch>;
   constexpr std::size_t kLanes = kSetupLanes<Arch>;
   const auto at = [](const double* lanes) { return D::load_aligned(lanes); };
@@ -110,7 +111,7 @@ inline void set_up_plane_group(const PlaneGroupInput<Arch>& in, bool colour_plan
     inverse_w[i] = xsimd::select(divides, D(1.0) / w[i], D(1.0));
   alignas(64) double at_vertex[kLanes], divided[kLanes];
   xsimd::select(divides, D(1.0), D(0.0)).store_aligned(divided);
-  for (int k = 0; k < kColourPlanes; ++k) {
+  for (int k = 0; k < kColourPlanes && colour_values; ++k) {
     D f[3];
     for (int i = 0; i < 3; ++i)
       f[i] = k < 4 ? D(255.0) * at(in.colour[i][k]) * inverse_w[i] : inverse_w[i];

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <span>
@@ -75,7 +76,9 @@ class ShadingVisitor {
   // begin_triangle() for each.
   void begin_group(const GroupCorners<Arch>& corners, const TriangleGroup<Arch>& positions) {
     PlaneGroupInput<Arch> in;
+    bool all_uniform = colour_planes_;
     for (std::size_t l = 0; l < kSetupLanes<Arch>; ++l) {
+      group_uniform_[l] = colour_planes_;
       for (int i = 0; i < 3; ++i) {
         in.x[i][l] = positions.x[i][l];
         in.y[i][l] = positions.y[i][l];
@@ -85,6 +88,14 @@ class ShadingVisitor {
         in.w[i][l] = valid ? batch_.clip_w[v] : 1.0f;
         if (colour_planes_) {
           const Vec4 colour = valid ? batch_.colors[v] : Vec4{};
+          // One colour at all three vertices (a mesh without colours, a material's colour):
+          // its planes would interpolate that colour, so it is used as it is, as flat shading
+          // uses it. Compared as bits: one load and compare per vertex.
+          if (i == 0) {
+            group_uniform_colour_[l] = colour;
+          } else {
+            group_uniform_[l] = group_uniform_[l] && same_bits(colour, group_uniform_colour_[l]);
+          }
           in.colour[i][0][l] = colour.x;
           in.colour[i][1][l] = colour.y;
           in.colour[i][2][l] = colour.z;
@@ -97,9 +108,11 @@ class ShadingVisitor {
           in.normal[i][2][l] = normal.z;
         }
       }
+      all_uniform = all_uniform && group_uniform_[l];
     }
     set_up_plane_group(in, colour_planes_, normal_planes_,
-                       batch_.perspective == Perspective::correct, group_);
+                       batch_.perspective == Perspective::correct, group_,
+                       /*colour_values=*/!all_uniform);
     if (budget_shading_ && !textured_) {
       mark_beyond_budget(in, normal_planes_, batch_.light, batch_.ambient,
                          detail::untextured_width_limit(batch_.budget_codes), beyond_budget_);
@@ -115,7 +128,7 @@ class ShadingVisitor {
     if (colour_planes_) {
       perspective_ = group_.perspective[l];
       min_inverse_w_ = group_.min_inverse_w[l];
-      for (int k = 0; k < kColourPlanes; ++k)
+      for (int k = 0; k < kColourPlanes && !group_uniform_[l]; ++k)
         plane_[k] = group_.colour[k][l];
       if (normal_planes_) {
         for (int k = kFirstNormalPlane; k < kShadingPlanes; ++k)
@@ -126,6 +139,14 @@ class ShadingVisitor {
     // rule one colour out.
     constant_ = tile_choices_ = false;
     if (needs_vertices_ || (budget_shading_ && !beyond_budget_[l])) begin_triangle_from_vertices(t);
+    if (group_uniform_[l]) {
+      // Planes of the colour scaled to 0 .. 255 and of zero slope give it exactly at every
+      // pixel, and nothing to divide.
+      for (int k = 0; k < 4; ++k)
+        plane_[k] = {255.0f * (&group_uniform_colour_[l].x)[k], 0.0f, 0.0f};
+      plane_[4] = {1.0f, 0.0f, 0.0f};
+      perspective_ = false;
+    }
   }
 
   // What the group's planes leave out: normals, texture planes, flat colour and the other
@@ -843,6 +864,14 @@ class ShadingVisitor {
   // constant, when diffuse shading needs the normal planes after it).
   int planes_used() const { return normal_planes_ ? kShadingPlanes : perspective_ ? 5 : 4; }
 
+  // Equal bit patterns (equal colours as stored; +0 and -0, or two NaNs, count as different).
+  static bool same_bits(const Vec4& a, const Vec4& b) {
+    std::uint64_t x[2], y[2];
+    std::memcpy(x, &a, sizeof x);
+    std::memcpy(y, &b, sizeof y);
+    return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
+  }
+
   // depth_step() with the test chosen per call.
   [[gnu::always_inline]] Mask depth_step_any_test(float* depth, int row, std::size_t h,
                                                   Floats row_base, Floats depth_column,
@@ -1092,6 +1121,9 @@ class ShadingVisitor {
   std::uint32_t constant_colour_ = 0;
   detail::TexturePlanes texture_planes_{};
   bool beyond_budget_[kSetupLanes<Arch>]{};  // of the current group (mark_beyond_budget())
+  // Of the current group: the lanes whose vertices share one colour, and that colour.
+  bool group_uniform_[kSetupLanes<Arch>]{};
+  Vec4 group_uniform_colour_[kSetupLanes<Arch>]{};
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
   float min_inverse_w_ = 1.0f;  // the plane of 1 / w's floor (PlaneGroup::min_inverse_w)
