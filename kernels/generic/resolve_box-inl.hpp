@@ -35,9 +35,19 @@ void resolve_box_tiles(const detail::ResolveCall& call, std::int32_t first_tile_
   alignas(64) std::uint32_t packed[64];
   alignas(64) std::uint32_t red_blue[64], green_alpha[64];
   for (std::int32_t ty = first_tile_row; ty < last_tile_row; ++ty) {
+    const std::int32_t rows = std::min(8, call.height - ty * 8);
     for (std::int32_t tx = 0; tx < call.tiles_x; ++tx) {
       const std::uint32_t* tile =
           call.tiles + (static_cast<std::size_t>(ty) * call.tiles_x + tx) * samples * 64;
+      const std::int32_t x0 = tx * 8;
+      const auto columns = static_cast<std::size_t>(std::min(8, call.width - x0));
+      // Linear codes of a tile's whole rows go straight to the image; the others through
+      // `packed`.
+      const bool direct = !call.srgb && columns == 8;
+      const auto row_start = [&](std::size_t row) {
+        const std::size_t y = static_cast<std::size_t>(ty) * 8 + row;
+        return call.rgba + (y * static_cast<std::size_t>(call.width) + x0) * 4;
+      };
       for (std::size_t p = 0; p < 64; p += kLanes) {
         Words even(0u), odd(0u);
         for (std::size_t k = 0; k < samples; ++k) {
@@ -47,28 +57,32 @@ void resolve_box_tiles(const detail::ResolveCall& call, std::int32_t first_tile_
         }
         const Words mean_even = ((even + rounding) >> shift) & low_bytes;
         const Words mean_odd = ((odd + rounding) >> shift) & low_bytes;
-        (mean_even | (mean_odd << 8)).store_aligned(packed + p);
+        const Words codes = mean_even | (mean_odd << 8);
+        if (direct) {
+          if (static_cast<std::int32_t>(p / 8) < rows) {
+            alignas(64) std::uint32_t lanes[kLanes];  // a constant-size copy: one store
+            codes.store_aligned(lanes);
+            std::memcpy(row_start(p / 8) + (p % 8) * 4, lanes, sizeof lanes);
+          }
+          continue;
+        }
+        codes.store_aligned(packed + p);
         if (call.srgb) {
           even.store_aligned(red_blue + p);
           odd.store_aligned(green_alpha + p);
         }
       }
+      if (direct) continue;
       if (call.srgb) {  // R, G and B by the table; alpha stays the linear mean
-        const std::uint8_t* codes = call.colour_codes.data();
+        const std::uint8_t* table = call.colour_codes.data();
         for (std::size_t p = 0; p < 64; ++p) {
-          packed[p] = codes[red_blue[p] & 0xFFFFu] |
-                      std::uint32_t{codes[green_alpha[p] & 0xFFFFu]} << 8 |
-                      std::uint32_t{codes[red_blue[p] >> 16]} << 16 | (packed[p] & 0xFF000000u);
+          packed[p] = table[red_blue[p] & 0xFFFFu] |
+                      std::uint32_t{table[green_alpha[p] & 0xFFFFu]} << 8 |
+                      std::uint32_t{table[red_blue[p] >> 16]} << 16 | (packed[p] & 0xFF000000u);
         }
       }
-      const std::int32_t x0 = tx * 8;
-      const auto columns = static_cast<std::size_t>(std::min(8, call.width - x0));
-      const std::int32_t rows = std::min(8, call.height - ty * 8);
-      for (std::int32_t row = 0; row < rows; ++row) {
-        const std::size_t y = static_cast<std::size_t>(ty) * 8 + static_cast<std::size_t>(row);
-        std::memcpy(call.rgba + (y * static_cast<std::size_t>(call.width) + x0) * 4,
-                    packed + row * 8, columns * 4);
-      }
+      for (std::int32_t row = 0; row < rows; ++row)
+        std::memcpy(row_start(static_cast<std::size_t>(row)), packed + row * 8, columns * 4);
     }
   }
 }

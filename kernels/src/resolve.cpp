@@ -7,7 +7,6 @@
 #include "edgewise/resolve.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -16,7 +15,6 @@
 #include <vector>
 
 #include "edgewise/multisample.hpp"
-#include "edgewise/texture.hpp"
 #include "kernel_table.hpp"
 #include "parallel.hpp"
 #include "resolve_call.hpp"
@@ -92,13 +90,14 @@ void resolve_box_blocks(const detail::ResolveCall& call, std::int32_t first_row,
 }
 
 // The code of every channel sum of a pixel's samples under the box filter (factor 1), as the
-// reference encodes it.
+// reference encodes it (the sRGB codes by the constant-time cells, equal to its search).
 std::vector<std::uint8_t> box_colour_codes(int samples, bool srgb) {
   const float scale = 1.0f / (255.0f * static_cast<float>(samples));
   const double inverse = 1.0 / static_cast<double>(samples);
+  const detail::SrgbCodeCells& cells = detail::srgb_code_cells();
   std::vector<std::uint8_t> codes(static_cast<std::size_t>(255 * samples + 1));
   for (std::size_t sum = 0; sum < codes.size(); ++sum) {
-    codes[sum] = srgb ? detail::encode_resolved(static_cast<float>(sum) * scale, true)
+    codes[sum] = srgb ? cells.code(std::min(1.0f, static_cast<float>(sum) * scale))
                       : static_cast<std::uint8_t>(static_cast<double>(sum) * inverse + 0.5);
   }
   return codes;
