@@ -98,13 +98,7 @@ void resolve_taps_rows(const detail::ResolveCall& call, std::int32_t first_row,
         for (; x < last && x % 8 != 0; ++x)
           column(static_cast<std::size_t>(x - q_min));
         for (; x + 8 <= last; x += 8) {
-          const std::uint32_t* pixels =
-              &call.tiles[((static_cast<std::size_t>(y / 8) * call.tiles_x +
-                            static_cast<std::size_t>(x / 8)) *
-                               call.samples +
-                           k) *
-                              64 +
-                          static_cast<std::size_t>(y % 8) * 8];
+          const std::uint32_t* pixels = call.pixel(x, y, k);
           for (std::int32_t h = 0; h < 8; h += kLanes) {
             const Words c = Words::load_aligned(pixels + h);
             for (std::size_t channel = 0; channel < 4; ++channel) {

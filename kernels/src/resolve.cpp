@@ -160,7 +160,6 @@ void resolve(const Framebuffer& source, std::span<std::uint8_t> rgba,
     throw std::invalid_argument("resolve: the span holds " + std::to_string(rgba.size()) +
                                 " bytes, not " + std::to_string(bytes));
   }
-  if (options.srgb) detail::srgb_code_cells();  // made once, before the tasks share it
   const KernelTable& kernels = detail::kernel_table(resolve_isa(options.isa));
   const detail::Workers workers =
       detail::resolve_workers(options.threads, options.executor, "resolve");

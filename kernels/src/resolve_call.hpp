@@ -58,12 +58,17 @@ struct ResolveCall {
   // The other filters: every output pixel's taps.
   std::span<const ResolveTap> taps;
 
-  std::uint32_t color(std::int32_t x, std::int32_t y, std::int32_t sample) const {
+  // Sample `sample` of pixel (x, y) in the tiled storage; the tile row's 8 pixels follow it
+  // when x is a multiple of 8.
+  const std::uint32_t* pixel(std::int32_t x, std::int32_t y, std::int32_t sample) const {
     const std::size_t tile = static_cast<std::size_t>(y / 8) * static_cast<std::size_t>(tiles_x) +
                              static_cast<std::size_t>(x / 8);
-    return tiles[(tile * static_cast<std::size_t>(samples) + static_cast<std::size_t>(sample)) *
-                     64 +
-                 static_cast<std::size_t>((y % 8) * 8 + x % 8)];
+    return tiles +
+           (tile * static_cast<std::size_t>(samples) + static_cast<std::size_t>(sample)) * 64 +
+           static_cast<std::size_t>((y % 8) * 8 + x % 8);
+  }
+  std::uint32_t color(std::int32_t x, std::int32_t y, std::int32_t sample) const {
+    return *pixel(x, y, sample);
   }
 };
 
