@@ -125,10 +125,11 @@ class ShadingVisitor {
     sample_rows_tile_y_ = kNoTileRow;
     depth_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
     max_vertex_depth_ = group_.max_depth[l];
+    uniform_ = group_uniform_[l];
     if (colour_planes_) {
       perspective_ = group_.perspective[l];
       min_inverse_w_ = group_.min_inverse_w[l];
-      for (int k = 0; k < kColourPlanes && !group_uniform_[l]; ++k)
+      for (int k = 0; k < kColourPlanes && !uniform_; ++k)
         plane_[k] = group_.colour[k][l];
       if (normal_planes_) {
         for (int k = kFirstNormalPlane; k < kShadingPlanes; ++k)
@@ -139,12 +140,11 @@ class ShadingVisitor {
     // rule one colour out.
     constant_ = tile_choices_ = false;
     if (needs_vertices_ || (budget_shading_ && !beyond_budget_[l])) begin_triangle_from_vertices(t);
-    if (group_uniform_[l]) {
-      // Planes of the colour scaled to 0 .. 255 and of zero slope give it exactly at every
-      // pixel, and nothing to divide.
+    if (uniform_) {
+      // The colour scaled to 0 .. 255 at every pixel, exactly: its planes would have zero slopes
+      // (and give the same packed colour), and there is nothing to divide.
       for (int k = 0; k < 4; ++k)
-        plane_[k] = {255.0f * (&group_uniform_colour_[l].x)[k], 0.0f, 0.0f};
-      plane_[4] = {1.0f, 0.0f, 0.0f};
+        uniform_channel_[k] = 255.0f * (&group_uniform_colour_[l].x)[k];
       perspective_ = false;
     }
   }
@@ -547,7 +547,7 @@ class ShadingVisitor {
           Floats(depth_.x0);
       columns.depth[h] = Floats(depth_.dzdx) * dx;
       if (colour_planes_ && !constant_) {
-        for (int k = 0; k < planes_used(); ++k)
+        for (int k = first_plane(); k < planes_used(); ++k)
           columns.colour[k][h] = Floats(plane_[k].dx) * dx;
       }
     }
@@ -560,7 +560,7 @@ class ShadingVisitor {
       const Floats dy =
           interpolation_detail::lane_centers<Arch>(py + static_cast<std::int32_t>(h * kLanes)) -
           Floats(depth_.y0);
-      for (int k = 0; k < planes_used(); ++k) {
+      for (int k = first_plane(); k < planes_used(); ++k) {
         (Floats(plane_[k].at_vertex) + Floats(plane_[k].dy) * dy)
             .store_aligned(&colour_row_bases[k][h * kLanes]);
       }
@@ -602,6 +602,14 @@ class ShadingVisitor {
                                                   std::int32_t py, const ColumnTerms& columns,
                                                   const float (*colour_row_bases)[kTileSize],
                                                   Floats& stored_max) {
+    if (uniform_) {
+      if (mask == ~std::uint64_t{0}) {
+        return shade_planar_rows<Test, false, true, RowTermsPerRow, Lit, true>(
+            mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
+      }
+      return shade_planar_rows<Test, false, false, RowTermsPerRow, Lit, true>(
+          mask, rows, depth, color, py, columns, colour_row_bases, stored_max);
+    }
     if (mask == ~std::uint64_t{0}) {
       if (perspective_) {
         return shade_planar_rows<Test, true, true, RowTermsPerRow, Lit>(
@@ -620,8 +628,10 @@ class ShadingVisitor {
 
   // shade_rows() for colour from planes (Gouraud, or diffuse when Lit), depth written: the same
   // operations as the generic loop, with the choices made once per tile and the counts kept in
-  // registers. A full tile (every sample covered) runs all eight rows without lane masks.
-  template <DepthTest Test, bool Divide, bool Full, bool RowTermsPerRow, bool Lit>
+  // registers. A full tile (every sample covered) runs all eight rows without lane masks; a
+  // Uniform triangle's colour is the same at every pixel.
+  template <DepthTest Test, bool Divide, bool Full, bool RowTermsPerRow, bool Lit,
+            bool Uniform = false>
   [[gnu::always_inline]] void shade_planar_rows(std::uint64_t mask, std::uint32_t rows,
                                                 float* depth, std::uint32_t* color, std::int32_t py,
                                                 const ColumnTerms& columns,
@@ -644,7 +654,7 @@ class ShadingVisitor {
         largest = xsimd::max(largest, updated);
         passed += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
         float row_term[kPlanes];
-        for (int k = 0; k < kPlanes; ++k) {
+        for (int k = Uniform ? kFirstNormalPlane : 0; k < kPlanes; ++k) {
           if (k == 4 && !Divide) continue;
           if (k >= kFirstNormalPlane && !Lit) break;
           if constexpr (RowTermsPerRow) {
@@ -656,8 +666,13 @@ class ShadingVisitor {
           }
         }
         Floats channel[4];
-        for (int k = 0; k < 4; ++k)
-          channel[k] = Floats(row_term[k]) + columns.colour[k][h];
+        for (int k = 0; k < 4; ++k) {
+          if constexpr (Uniform) {
+            channel[k] = Floats(uniform_channel_[k]);
+          } else {
+            channel[k] = Floats(row_term[k]) + columns.colour[k][h];
+          }
+        }
         if constexpr (Divide) {
           const Floats w = Floats(1.0f) / xsimd::max(Floats(row_term[4]) + columns.colour[4][h],
                                                      Floats(min_inverse_w_));
@@ -863,6 +878,8 @@ class ShadingVisitor {
   // Planes in use: the fifth, 1 / w, only for perspective-correct colour (it is set up, as a
   // constant, when diffuse shading needs the normal planes after it).
   int planes_used() const { return normal_planes_ ? kShadingPlanes : perspective_ ? 5 : 4; }
+  // The first of them: a uniform triangle's colour needs no planes.
+  int first_plane() const { return uniform_ ? kFirstNormalPlane : 0; }
 
   // Equal bit patterns (equal colours as stored; +0 and -0, or two NaNs, count as different).
   static bool same_bits(const Vec4& a, const Vec4& b) {
@@ -1035,8 +1052,10 @@ class ShadingVisitor {
   [[gnu::always_inline]] void planar_channels(const float (*row_bases)[kTileSize],
                                               const ColumnTerms& columns, int row, std::size_t h,
                                               Floats channel[4]) const {
-    for (int k = 0; k < 4; ++k)
-      channel[k] = Floats(row_bases[k][row]) + columns.colour[k][h];
+    for (int k = 0; k < 4; ++k) {
+      channel[k] =
+          uniform_ ? Floats(uniform_channel_[k]) : Floats(row_bases[k][row]) + columns.colour[k][h];
+    }
     if (perspective_) {
       const Floats w = Floats(1.0f) / xsimd::max(Floats(row_bases[4][row]) + columns.colour[4][h],
                                                  Floats(min_inverse_w_));
@@ -1126,8 +1145,11 @@ class ShadingVisitor {
   Vec4 group_uniform_colour_[kSetupLanes<Arch>]{};
   std::int32_t origin_x_ = 0, origin_y_ = 0;
   bool perspective_ = false;
-  float min_inverse_w_ = 1.0f;  // the plane of 1 / w's floor (PlaneGroup::min_inverse_w)
-  ColourPlane plane_[kPlanes]{};
+  float min_inverse_w_ = 1.0f;    // the plane of 1 / w's floor (PlaneGroup::min_inverse_w)
+  ColourPlane plane_[kPlanes]{};  // those from first_plane() to planes_used() set
+  // The current triangle's vertices share one colour: uniform_channel_, scaled to 0 .. 255.
+  bool uniform_ = false;
+  float uniform_channel_[4]{};
   // The colour planes' row terms for the tile row row_bases_tile_y_ (set_up_colour_rows()).
   static constexpr std::uint32_t kNoTileRow = UINT32_MAX;
   std::uint32_t row_bases_tile_y_ = kNoTileRow;

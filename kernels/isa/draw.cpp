@@ -2,6 +2,7 @@
 // shading of screen-space triangles, compiled once per ISA.
 #include "../src/isa_build.hpp"
 
+#include "../generic/culled_triangles-inl.hpp"
 #include "../generic/shade-inl.hpp"
 #include "../generic/triangle_batch-inl.hpp"
 #include "../generic/vertex_stage-inl.hpp"
@@ -21,6 +22,11 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
   ShadingVisitor<Arch> visitor(batch);
   run_batch(batch.coverage, visitor, report);
   visitor.add_counts(counts);
+}
+
+std::size_t drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
+                                  std::uint32_t* indices, std::size_t triangles, CullMode cull) {
+  return drop_culled_triangle_list<Arch>(vertices, vertex_count, indices, triangles, cull);
 }
 
 void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {

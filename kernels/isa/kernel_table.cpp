@@ -7,9 +7,11 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 const detail::KernelTable& kernel_table() {
   static constexpr detail::KernelTable table{
-      EDGEWISE_ISA_ENUM,   &rasterize,      &count_coverage, &transform_vertices, &map_vertices,
-      &assemble_triangles, &shade,          &resolve_box,    &resolve_taps,       &sample,
-      &sample_fields,      &rasterize_areas};
+      EDGEWISE_ISA_ENUM,      &rasterize,    &count_coverage,
+      &transform_vertices,    &map_vertices, &assemble_triangles,
+      &drop_culled_triangles, &shade,        &resolve_box,
+      &resolve_taps,          &sample,       &sample_fields,
+      &rasterize_areas};
   return table;
 }
 

@@ -167,4 +167,25 @@ void for_each_drawn_triangle(
   }
 }
 
+std::size_t drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
+                                  std::uint32_t* indices, std::size_t triangles, CullMode cull) {
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const std::uint32_t corner[3] = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
+    bool culled = false;
+    if (corner[0] < vertex_count && corner[1] < vertex_count && corner[2] < vertex_count) {
+      SnappedTriangle snapped;
+      const TriangleStatus status = snap_and_classify(vertices[corner[0]], vertices[corner[1]],
+                                                      vertices[corner[2]], cull, snapped);
+      culled =
+          status == TriangleStatus::culled_zero_area || status == TriangleStatus::culled_winding;
+    }
+    if (culled) continue;
+    for (int i = 0; i < 3; ++i)
+      indices[3 * kept + i] = corner[i];
+    ++kept;
+  }
+  return kept;
+}
+
 }  // namespace edgewise::reference

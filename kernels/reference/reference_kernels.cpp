@@ -127,13 +127,19 @@ void sample_fields(const detail::TextureDescription& texture, const SamplerOptio
 }  // namespace
 
 const detail::KernelTable& kernel_table() {
-  static constexpr detail::KernelTable table{
-      Isa::reference,           &rasterize,
-      &count_coverage,          &transform_vertices,
-      &reference::map_vertices, &reference::assemble_triangles,
-      &reference::shade,        &reference::resolve_box,
-      &reference::resolve_taps, &sample,
-      &sample_fields,           &rasterize_areas};
+  static constexpr detail::KernelTable table{Isa::reference,
+                                             &rasterize,
+                                             &count_coverage,
+                                             &transform_vertices,
+                                             &reference::map_vertices,
+                                             &reference::assemble_triangles,
+                                             &reference::drop_culled_triangles,
+                                             &reference::shade,
+                                             &reference::resolve_box,
+                                             &reference::resolve_taps,
+                                             &sample,
+                                             &sample_fields,
+                                             &rasterize_areas};
   return table;
 }
 

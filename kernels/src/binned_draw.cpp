@@ -263,7 +263,8 @@ void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh&
   std::vector<DrawReport> vertex_reports(ranges);
   std::vector<RasterReport> range_reports(ranges);
   const auto bin_part = [&](const ScreenMesh& all, std::size_t range) {
-    const ScreenMesh& part = parts[range];
+    ScreenMesh& part = parts[range];
+    drop_culled_triangles(*call.kernels, all, part, options.cull, vertex_reports[range]);
     const TriangleBatch batch = screen_triangles(target, all, part.indices.data(),
                                                  part.indices.size() / 3, call.clip, options.cull);
     bin_screen_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),

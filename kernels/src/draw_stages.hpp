@@ -28,7 +28,8 @@ struct DrawCall {
 DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
 
 // The vertex stage (vertex_stage.cpp, through the ISA's kernel): transform, clipping, screen
-// mapping and snapping of every triangle, counted into call.report.
+// mapping and snapping of every triangle, and the culling of those set-up would cull, counted
+// into call.report.
 ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
                          const DrawOptions& options);
 

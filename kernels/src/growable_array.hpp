@@ -34,6 +34,8 @@ class GrowableArray {
     return first;
   }
   void push_back(T value) { *extend(1) = value; }  // by value: extend() may move the array
+  // Keeps the first `size` elements (at most size()).
+  void truncate(std::size_t size) { size_ = std::min(size, size_); }
   void reserve(std::size_t capacity) {
     if (capacity > capacity_) grow(capacity);
   }

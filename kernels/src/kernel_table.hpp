@@ -58,6 +58,13 @@ struct KernelTable {
   void (*assemble_triangles)(const VertexStageCall& call, const std::int32_t* codes,
                              std::size_t first, std::size_t last, ScreenMesh& out,
                              DrawReport& report);
+  // Drops from `indices` (three per triangle into `vertices`) the triangles set-up would cull:
+  // zero area after snapping, or facing away under `cull`; the rest keep their order. A triangle
+  // with a bad index or a vertex outside the guard band stays, for set-up to report. Returns how
+  // many triangles are kept.
+  std::size_t (*drop_culled_triangles)(const Vec2* vertices, std::size_t vertex_count,
+                                       std::uint32_t* indices, std::size_t triangles,
+                                       CullMode cull);
   void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
   // Resolving (resolve.hpp): the box filter at factor 1, output rows [8 first, 8 last); tent and
   // Mitchell, output rows [first, last).

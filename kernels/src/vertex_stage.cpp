@@ -167,11 +167,22 @@ void add_triangle(const VertexStageCall& call, const std::uint32_t (&corner)[3],
   }
 }
 
+void drop_culled_triangles(const KernelTable& kernels, const ScreenMesh& positions,
+                           ScreenMesh& screen, CullMode cull, DrawReport& report) {
+  const std::size_t triangles = screen.indices.size() / 3;
+  const std::size_t kept =
+      kernels.drop_culled_triangles(positions.positions.data(), positions.positions.size(),
+                                    screen.indices.data(), triangles, cull);
+  screen.indices.truncate(3 * kept);
+  report.culled += triangles - kept;
+}
+
 ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
                          const DrawOptions& options) {
   ScreenMesh screen;
   run_vertex_stage(*call.kernels, vertex_stage_call(target, mesh, options, call.report.triangles),
                    screen, call.report);
+  drop_culled_triangles(*call.kernels, screen, screen, options.cull, call.report);
   return screen;
 }
 

@@ -52,6 +52,13 @@ void map_vertex_range(const KernelTable& kernels, const VertexStageCall& call, s
 void run_vertex_stage(const KernelTable& kernels, const VertexStageCall& call, ScreenMesh& out,
                       DrawReport& report);
 
+// The triangles of `screen` that set-up would cull (zero area, or facing away under `cull`)
+// dropped from its indices by the kernels' drop_culled_triangles, counted into report.culled:
+// primitive assembly's culling, before binning and set-up. `positions` are those the indices
+// name (a range's screen mesh may index the whole mesh's).
+void drop_culled_triangles(const KernelTable& kernels, const ScreenMesh& positions,
+                           ScreenMesh& screen, CullMode cull, DrawReport& report);
+
 // What the classes of a triangle's vertices (classify_clip_vertex()) say about it, before
 // clip_triangle() is asked.
 enum class TriangleClass : std::uint8_t {
