@@ -78,29 +78,13 @@ class ShadingVisitor {
     PlaneGroupInput<Arch> in;
     bool all_uniform = colour_planes_;
     for (std::size_t l = 0; l < kSetupLanes<Arch>; ++l) {
-      group_uniform_[l] = colour_planes_;
+      const bool valid = corners.valid[l];  // a bad index reads nothing; the lane is not drawn
       for (int i = 0; i < 3; ++i) {
         in.x[i][l] = positions.x[i][l];
         in.y[i][l] = positions.y[i][l];
-        const bool valid = corners.valid[l];  // a bad index reads nothing; the lane is not drawn
         const std::size_t v = corners.vertex[l][i];
         in.z[i][l] = valid ? batch_.depth[v] : 0.0f;
         in.w[i][l] = valid ? batch_.clip_w[v] : 1.0f;
-        if (colour_planes_) {
-          const Vec4 colour = valid ? batch_.colors[v] : Vec4{};
-          // One colour at all three vertices (a mesh without colours, a material's colour):
-          // its planes would interpolate that colour, so it is used as it is, as flat shading
-          // uses it. Compared as bits: one load and compare per vertex.
-          if (i == 0) {
-            group_uniform_colour_[l] = colour;
-          } else {
-            group_uniform_[l] = group_uniform_[l] && same_bits(colour, group_uniform_colour_[l]);
-          }
-          in.colour[i][0][l] = colour.x;
-          in.colour[i][1][l] = colour.y;
-          in.colour[i][2][l] = colour.z;
-          in.colour[i][3][l] = colour.w;
-        }
         if (normal_planes_) {
           const Vec3 normal = valid ? batch_.normals[v] : Vec3{};
           in.normal[i][0][l] = normal.x;
@@ -108,12 +92,39 @@ class ShadingVisitor {
           in.normal[i][2][l] = normal.z;
         }
       }
+      // One colour at all three vertices (a mesh without colours, a material's colour): its
+      // planes would interpolate that colour, so it is used as it is, as flat shading uses it.
+      // Compared as bits: one load and compare per vertex.
+      group_uniform_[l] = colour_planes_;
+      if (colour_planes_ && valid) {
+        const Vec4* colors = batch_.colors;
+        const Vec4& first = colors[corners.vertex[l][0]];
+        group_uniform_colour_[l] = first;
+        group_uniform_[l] = same_bits(colors[corners.vertex[l][1]], first) &&
+                            same_bits(colors[corners.vertex[l][2]], first);
+      } else {
+        group_uniform_colour_[l] = Vec4{};
+      }
       all_uniform = all_uniform && group_uniform_[l];
+    }
+    // The colours themselves, for the planes of a group with a colour that varies, and for the
+    // budget's bounds.
+    const bool budget_bounds = budget_shading_ && !textured_;
+    if (colour_planes_ && (!all_uniform || budget_bounds)) {
+      for (std::size_t l = 0; l < kSetupLanes<Arch>; ++l) {
+        for (int i = 0; i < 3; ++i) {
+          const Vec4 colour = corners.valid[l] ? batch_.colors[corners.vertex[l][i]] : Vec4{};
+          in.colour[i][0][l] = colour.x;
+          in.colour[i][1][l] = colour.y;
+          in.colour[i][2][l] = colour.z;
+          in.colour[i][3][l] = colour.w;
+        }
+      }
     }
     set_up_plane_group(in, colour_planes_, normal_planes_,
                        batch_.perspective == Perspective::correct, group_,
                        /*colour_values=*/!all_uniform);
-    if (budget_shading_ && !textured_) {
+    if (budget_bounds) {
       mark_beyond_budget(in, normal_planes_, batch_.light, batch_.ambient,
                          detail::untextured_width_limit(batch_.budget_codes), beyond_budget_);
     }
