@@ -201,13 +201,14 @@ TEST_P(IsaForcing, KernelTableIsComplete) {
   EXPECT_NE(table.transform_vertices, nullptr);
   EXPECT_NE(table.map_vertices, nullptr);
   EXPECT_NE(table.assemble_triangles, nullptr);
+  EXPECT_NE(table.drop_culled_triangles, nullptr);
   EXPECT_NE(table.shade, nullptr);
   EXPECT_NE(table.resolve_box, nullptr);
   EXPECT_NE(table.resolve_taps, nullptr);
   EXPECT_NE(table.sample, nullptr);
   EXPECT_NE(table.sample_fields, nullptr);
   EXPECT_NE(table.rasterize_areas, nullptr);
-  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 12,
+  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 13,
                 "a kernel was added to KernelTable: check it here");
 }
 
