@@ -571,8 +571,10 @@ def print_meshes(meshes, draw_peers):
     print(f"real meshes (MeshDraw/{isa}: per-pixel diffuse, back faces culled, perspective, "
           "1920x1080): ms per draw() call, and llvmpipe's time / edgewise's (> 1: edgewise faster)")
     header = ["mesh", "triangles", "fragments", f"{isa} 1 thread", "llvmpipe 1 thread",
-              "ratio 1", f"{isa} all cores", "llvmpipe default", "ratio all", "edgewise all / 1"]
+              "ratio 1", f"{isa} all cores", "llvmpipe default", "ratio all", "edgewise all / 1",
+              "serial share", "model 16", "model 64"]
     rows, ratios_one, ratios_all, scaling = [], [], [], []
+    models = {"model16": [], "model64": []}
 
     for name in names:
         one = meshes.get((name, isa, False))
@@ -589,6 +591,12 @@ def print_meshes(meshes, draw_peers):
         row += [f"{t_all * 1e3:.2f}" if t_all else "-", f"{p_all * 1e3:.2f}" if p_all else "-"]
         row.append(ratio(p_all, t_all) if p_all and t_all else "-")
         row.append(ratio(t_one, t_all) if t_one and t_all else "-")
+        counters = every or {}
+        row.append(f"{counters['serial_share'] * 100:.2f}%" if "serial_share" in counters else "-")
+        for key, values in models.items():
+            row.append(f"{counters[key]:.3g}x" if key in counters else "-")
+            if key in counters:
+                values.append(counters[key])
         if p_one and t_one:
             ratios_one.append(p_one / t_one)
         if p_all and t_all:
@@ -599,12 +607,16 @@ def print_meshes(meshes, draw_peers):
     print_table(header, rows)
     for label, values in (("edgewise 1 thread / llvmpipe 1 thread", ratios_one),
                           ("edgewise all cores / llvmpipe default threads", ratios_all),
-                          ("edgewise all cores / edgewise 1 thread", scaling)):
+                          ("edgewise all cores / edgewise 1 thread", scaling),
+                          ("modelled 16 threads / 1 thread", models["model16"]),
+                          ("modelled 64 threads / 1 thread", models["model64"])):
         if values:
             print(f"median over {len(values)} meshes, {label}: {statistics.median(values):.3g}x "
                   f"(min {min(values):.3g}x, max {max(values):.3g}x)")
     print("llvmpipe times are its DrawPeer/ medians (1 thread: CPU time; default: wall-clock); "
-          "edgewise 1 thread: CPU time; all cores: wall-clock time")
+          "edgewise 1 thread: CPU time; all cores: wall-clock time; serial share: the calling "
+          "thread's time outside the draw's tasks over the one-thread time; model 16, 64: the "
+          "speed-up the draw's schedule allows on 16 and 64 threads (bench/README.md)")
 
 
 def print_resolve(resolves, read_once):

@@ -86,37 +86,223 @@ TriangleBatch screen_triangles(const Framebuffer& target, const ScreenMesh& scre
           FramebufferAccess::sample_pattern(target)};
 }
 
-// Shades every bin, one task each: the lists of every range in range order, each through the
-// kernel with the bin as its clip rectangle, with range r's screen mesh (range_batches[r]).
+// One list of triangles a shading task walks, and the range whose screen mesh they index.
+struct ListRef {
+  std::size_t range;
+  const CornerList* list;
+};
+
+// A rectangle to shade (a bin, or a sub-bin of a crowded one) and its lists, refs[first, end)
+// of the call's ListRefs, in submission order.
+struct ShadeTask {
+  PixelRect rect;
+  std::size_t first, end;
+  std::size_t load = 0;  // task_load()
+};
+
+// A crowded bin cut into sub-bins (`grid` over the bin's rectangle). Its triangles are binned
+// again in pieces, its chunks [first_chunk, first_chunk + chunks), each into lists of its own:
+// the lists of chunk c start at first_list + (c - first_chunk) * grid.count().
+struct SplitBin {
+  std::size_t bin;
+  BinGrid grid;
+  std::size_t first_chunk = 0, chunks = 0, first_list = 0;
+};
+
+// A piece of a crowded bin's triangles: triangles [first, last) of its list from `range`.
+struct Chunk {
+  std::size_t split, range, first, last;
+};
+
+// How the shading phase's tasks are laid out.
+struct ShadePlan {
+  std::vector<ListRef> refs;
+  std::vector<ShadeTask> tasks;
+  std::optional<BinLists> sub_lists;  // the chunks' lists, when some bin is crowded
+};
+
+// The triangles in each bin's lists, over all ranges.
+std::vector<std::size_t> bin_loads(const BinGrid& grid, const BinLists& lists, std::size_t ranges) {
+  std::vector<std::size_t> loads(grid.count(), 0);
+  for (std::size_t range = 0; range < ranges; ++range) {
+    for (std::size_t bin = 0; bin < loads.size(); ++bin)
+      loads[bin] += lists.list(range, bin).triangles();
+  }
+  return loads;
+}
+
+// A task's estimated cost in triangles: its triangles, and a triangle for every kPixelsPerTriangle
+// px of its rectangle when it has any (the one-thread rates of 8-px and 200000-px triangles of
+// the Shading/ benchmark, docs/DESIGN.md "Threads", put a small triangle at about 500 to 700 px
+// of a large one's pixels).
+constexpr std::size_t kPixelsPerTriangle = 512;
+std::size_t task_load(const ShadeTask& task, std::span<const ListRef> refs) {
+  std::size_t triangles = 0;
+  for (std::size_t r = task.first; r < task.end; ++r)
+    triangles += refs[r].list->triangles();
+  if (triangles == 0) return 0;
+  const auto pixels = static_cast<std::size_t>(task.rect.x1 - task.rect.x0) *
+                      static_cast<std::size_t>(task.rect.y1 - task.rect.y0);
+  return triangles + pixels / kPixelsPerTriangle;
+}
+
+// The sub-bins for a bin of `load` triangles when a task's share is `share`: its longer side
+// halved (the width first) while a sub-bin would hold more than the share, down to sides of
+// 2^kMinSplitBinShift px.
+BinGrid split_grid(const BinGrid& grid, std::size_t bin, std::size_t load, std::size_t share) {
+  int width_shift = grid.width_shift, height_shift = grid.height_shift;
+  for (std::size_t parts = 1; load > share * parts; parts *= 2) {
+    if (width_shift >= height_shift && width_shift > kMinSplitBinShift) {
+      --width_shift;
+    } else if (height_shift > kMinSplitBinShift) {
+      --height_shift;
+    } else {
+      break;
+    }
+  }
+  return BinGrid(grid.rect(bin), width_shift, height_shift);
+}
+
+// The crowded bins (over a thread's share of the triangles, so that no schedule could balance
+// them, and at least kMinSplitTriangles), each with its sub-bins, and their chunks: both of
+// about a task's share (kTasksPerThread to a thread).
+std::vector<SplitBin> find_crowded_bins(const BinGrid& grid, const BinLists& lists,
+                                        std::size_t ranges, std::size_t threads,
+                                        std::vector<Chunk>& chunks) {
+  std::vector<SplitBin> splits;
+  if (threads < 2) return splits;  // one thread (a multisampled call) has nothing to balance
+  const std::vector<std::size_t> loads = bin_loads(grid, lists, ranges);
+  std::size_t total = 0;
+  for (std::size_t load : loads)
+    total += load;
+  const std::size_t share = std::max<std::size_t>(1, total / (threads * kTasksPerThread));
+  const std::size_t chunk = std::max(share, kMinSplitTriangles);
+  std::size_t sub_lists = 0;
+  for (std::size_t bin = 0; bin < loads.size(); ++bin) {
+    if (loads[bin] < kMinSplitTriangles || threads * loads[bin] <= total) continue;
+    SplitBin split{bin, split_grid(grid, bin, loads[bin], share)};
+    if (split.grid.count() < 2) continue;
+    split.first_chunk = chunks.size();
+    for (std::size_t range = 0; range < ranges; ++range) {
+      const std::size_t triangles = lists.list(range, bin).triangles();
+      for (std::size_t first = 0; first < triangles; first += chunk)
+        chunks.push_back({splits.size(), range, first, std::min(triangles, first + chunk)});
+    }
+    split.chunks = chunks.size() - split.first_chunk;
+    split.first_list = sub_lists;
+    sub_lists += split.chunks * split.grid.count();
+    splits.push_back(split);
+  }
+  return splits;
+}
+
+// Bins each chunk of the crowded bins again over its bin's sub-bins, one task per chunk, with
+// bin_screen_triangles() as the first binning: a triangle still undecided goes to the one
+// sub-bin it can reach or is decided here.
+void split_crowded_bins(DrawCall& call, const BinLists& lists,
+                        std::span<const ShadeBatch> range_batches, std::span<const SplitBin> splits,
+                        std::span<const Chunk> chunks, BinLists& sub_lists) {
+  std::vector<RasterReport> reports(chunks.size());
+  call.workers.run(chunks.size(), [&](std::size_t c) {
+    const Chunk& chunk = chunks[c];
+    const SplitBin& split = splits[chunk.split];
+    const CornerList& list = lists.list(chunk.range, split.bin);
+    TriangleBatch batch = range_batches[chunk.range].coverage;
+    batch.indices = list.data();
+    batch.triangle_count = list.triangles();
+    batch.clip = split.grid.clip;
+    batch.statuses = nullptr;
+    CornerList* out =
+        sub_lists.range_lists(0) + split.first_list + (c - split.first_chunk) * split.grid.count();
+    bin_screen_triangles(batch, chunk.first, chunk.last, split.grid, out, reports[c]);
+  });
+  // Only triangles the first binning left undecided can be decided as culled or errors here,
+  // and each is in one bin: counted once, as a bin's kernel call counts them.
+  DrawReport& report = call.report;
+  for (const RasterReport& part : reports) {
+    report.culled += part.culled;
+    report.errors += part.errors;
+    report.rasterized -= part.culled + part.errors;
+  }
+}
+
+// The shading phase's tasks into `plan`: every bin, except that crowded bins (a mesh in the middle
+// of the screen) are cut into sub-bins, so that no task holds far more than its share of the
+// triangles and every thread has work to the end (docs/DESIGN.md, "Threads"). Each tile lies in
+// exactly one task's rectangle, and a task's lists are in submission order. The costliest tasks
+// come first, so that the last to start are short ones.
+void plan_shading(ShadePlan& plan, DrawCall& call, const BinGrid& grid, const BinLists& lists,
+                  std::span<const ShadeBatch> range_batches) {
+  const std::size_t ranges = range_batches.size();
+  std::vector<Chunk> chunks;
+  const std::vector<SplitBin> splits =
+      find_crowded_bins(grid, lists, ranges, call.workers.threads, chunks);
+  if (!splits.empty()) {
+    const SplitBin& last = splits.back();
+    plan.sub_lists.emplace(1, last.first_list + last.chunks * last.grid.count());
+    split_crowded_bins(call, lists, range_batches, splits, chunks, *plan.sub_lists);
+  }
+  const auto add_ref = [&](std::size_t range, const CornerList& list) {
+    if (!list.empty()) plan.refs.push_back({range, &list});
+  };
+  std::size_t next_split = 0;
+  for (std::size_t bin = 0; bin < grid.count(); ++bin) {
+    if (next_split < splits.size() && splits[next_split].bin == bin) {
+      const SplitBin& split = splits[next_split++];
+      const std::size_t count = split.grid.count();
+      for (std::size_t s = 0; s < count; ++s) {
+        ShadeTask task{split.grid.rect(s), plan.refs.size(), 0};
+        for (std::size_t c = 0; c < split.chunks; ++c)
+          add_ref(chunks[split.first_chunk + c].range,
+                  plan.sub_lists->list(0, split.first_list + c * count + s));
+        task.end = plan.refs.size();
+        plan.tasks.push_back(task);
+      }
+      continue;
+    }
+    ShadeTask task{grid.rect(bin), plan.refs.size(), 0};
+    for (std::size_t range = 0; range < ranges; ++range)
+      add_ref(range, lists.list(range, bin));
+    task.end = plan.refs.size();
+    plan.tasks.push_back(task);
+  }
+  for (ShadeTask& task : plan.tasks)
+    task.load = task_load(task, plan.refs);
+  std::stable_sort(plan.tasks.begin(), plan.tasks.end(),
+                   [](const ShadeTask& a, const ShadeTask& b) { return a.load > b.load; });
+}
+
+// Shades every bin (or its sub-bins, plan_shading()), one task each: its lists in submission
+// order, each through the kernel with the task's rectangle as its clip rectangle and the screen
+// mesh of the list's range (range_batches[r]).
 void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
                 std::span<const ShadeBatch> range_batches) {
-  std::vector<BinCounts> bin_counts(grid.count());
-  call.workers.run(grid.count(), [&](std::size_t bin) {
-    ShadeCounts& counts = bin_counts[bin].shading;
-    RasterReport& triangles = bin_counts[bin].triangles;
-    const PixelRect rect = grid.rect(bin);
-    bool shaded = false;
-    for (std::size_t range = 0; range < range_batches.size(); ++range) {
-      const CornerList& list = lists.list(range, bin);
-      if (list.empty()) continue;
-      ShadeBatch batch = range_batches[range];
-      batch.coverage.clip = rect;
+  ShadePlan plan;
+  plan_shading(plan, call, grid, lists, range_batches);
+  std::vector<BinCounts> task_counts(plan.tasks.size());
+  call.workers.run(plan.tasks.size(), [&](std::size_t index) {
+    const ShadeTask& task = plan.tasks[index];
+    ShadeCounts& counts = task_counts[index].shading;
+    RasterReport& triangles = task_counts[index].triangles;
+    for (std::size_t r = task.first; r < task.end; ++r) {
+      const CornerList& list = *plan.refs[r].list;
+      ShadeBatch batch = range_batches[plan.refs[r].range];
+      batch.coverage.clip = task.rect;
       batch.coverage.indices = list.data();
       batch.coverage.triangle_count = list.triangles();
       call.kernels->shade(batch, triangles, counts);
-      shaded = true;
     }
-    if (!shaded) {
+    if (task.first == task.end) {
       // A one-thread call hands these tiles to the kernel too: the reference rebuilds the depth
       // bounds of its whole clip rectangle after drawing.
       ShadeBatch batch = range_batches[0];
-      batch.coverage.clip = rect;
+      batch.coverage.clip = task.rect;
       batch.coverage.triangle_count = 0;
       call.kernels->shade(batch, triangles, counts);
     }
   });
   DrawReport& report = call.report;
-  for (const BinCounts& counts : bin_counts) {
+  for (const BinCounts& counts : task_counts) {
     report.culled += counts.triangles.culled;
     report.errors += counts.triangles.errors;
     report.rasterized -= counts.triangles.culled + counts.triangles.errors;

@@ -35,6 +35,13 @@ struct BinGrid {
 // Bin sizes as (log2 width, log2 height), largest first.
 inline constexpr int kBinSizes[][2] = {{8, 7}, {7, 7}, {7, 6}, {6, 6}};
 inline constexpr std::size_t kBinsPerThread = 8;
+// A bin holding over a thread's share of the triangles, and at least kMinSplitTriangles,
+// is crowded: it is cut into sub-bins of about a task's share each (kTasksPerThread tasks to a
+// thread), no smaller than 2^kMinSplitBinShift px a side (kernels/src/binned_draw.cpp,
+// plan_shading()).
+inline constexpr std::size_t kTasksPerThread = 4;
+inline constexpr std::size_t kMinSplitTriangles = 256;
+inline constexpr int kMinSplitBinShift = 4;
 // Half the 1 MiB L2 cache of a Zen 4 or Zen 5 core: 128 x 128 px at 4 samples of 8 bytes.
 inline constexpr std::size_t kMultisampleBinBytes = std::size_t{1} << 19;
 
