@@ -10,96 +10,28 @@
 // (amdahl16, amdahl64), so that a machine of few cores shows what would stop many from scaling;
 // and model16, model64: the speed-up on 16 and 64 threads of the draw's own schedule (its serial
 // part, its phases' task counts and their balance), from its tasks timed one by one
-// (modelled_seconds()).
+// (schedule_model.hpp).
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <functional>
-#include <queue>
 #include <string>
 #include <vector>
 
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
 #include "mesh_scenes.hpp"
+#include "schedule_model.hpp"
 
 namespace edgewise::bench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The median time of one-thread draws of `mesh`, in seconds.
-double one_thread_seconds(const DrawMesh& mesh, DrawOptions options, Framebuffer& target) {
-  options.threads = 1;
-  options.executor = {};
-  std::vector<double> seconds;
-  for (int i = 0; i < 5; ++i) {
-    target.clear(kMeshClearColor, kMeshClearDepth);
-    const Clock::time_point start = Clock::now();
-    draw(target, mesh, options);
-    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
-  }
-  std::nth_element(seconds.begin(), seconds.begin() + 2, seconds.end());
-  return seconds[2];
-}
-
 // The speed-up on `threads` threads that a serial share `s` of the one-thread time allows.
 double amdahl_bound(double s, double threads) {
   return 1.0 / (s + (1.0 - s) / threads);
-}
-
-// The time `tasks` (seconds each) take when dealt, in order, each to whichever of `workers`
-// workers is free first: how a dynamic scheduler spreads them.
-double makespan(const std::vector<double>& tasks, std::size_t workers) {
-  std::priority_queue<double, std::vector<double>, std::greater<>> free_at;
-  for (std::size_t w = 0; w < workers; ++w)
-    free_at.push(0.0);
-  double end = 0.0;
-  for (double task : tasks) {
-    const double finish = free_at.top() + task;
-    free_at.pop();
-    free_at.push(finish);
-    end = std::max(end, finish);
-  }
-  return end;
-}
-
-// The time of a draw made for `threads` threads (their bins and ranges) on as many cores, as its
-// schedule allows: the draw's tasks are run one after the other on the calling thread, each
-// timed, and every phase (one executor call) then takes its makespan() on `threads` workers,
-// added to the calling thread's time outside the tasks. The median of five draws. What the
-// cores would share (memory bandwidth, the last-level cache) is not in it: it models the
-// schedule (serial parts, task counts, balance), as Amdahl's bound models the serial share.
-double modelled_seconds(const DrawMesh& mesh, DrawOptions options, Framebuffer& target,
-                        std::size_t threads) {
-  std::vector<std::vector<double>> phases;
-  options.threads = threads;
-  options.executor = [&phases](std::size_t count, const std::function<void(std::size_t)>& task) {
-    std::vector<double>& times = phases.emplace_back(count);
-    for (std::size_t i = 0; i < count; ++i) {
-      const Clock::time_point start = Clock::now();
-      task(i);
-      times[i] = std::chrono::duration<double>(Clock::now() - start).count();
-    }
-  };
-  std::vector<double> seconds;
-  for (int i = 0; i < 5; ++i) {
-    target.clear(kMeshClearColor, kMeshClearDepth);
-    phases.clear();
-    const Clock::time_point start = Clock::now();
-    draw(target, mesh, options);
-    double modelled = std::chrono::duration<double>(Clock::now() - start).count();
-    for (const std::vector<double>& phase : phases) {
-      for (double task : phase)
-        modelled -= task;
-      modelled += makespan(phase, threads);
-    }
-    seconds.push_back(modelled);
-  }
-  std::nth_element(seconds.begin(), seconds.begin() + 2, seconds.end());
-  return seconds[2];
 }
 
 void mesh_draw(benchmark::State& state, Isa isa, const MeshScene* scene, std::size_t threads) {
@@ -144,13 +76,18 @@ void mesh_draw(benchmark::State& state, Isa isa, const MeshScene* scene, std::si
   if (threads != 1 && iterations > 0) {
     const double serial_seconds =
         std::chrono::duration<double>(drawing - in_tasks).count() / iterations;
-    const double one_thread = one_thread_seconds(mesh, options, target);
+    const auto prepare = [&] { target.clear(kMeshClearColor, kMeshClearDepth); };
+    const auto draw_with = [&](const DrawOptions& with) { draw(target, mesh, with); };
+    DrawOptions one = options;
+    one.threads = 1;
+    one.executor = {};
+    const double one_thread = median_seconds(prepare, [&] { draw_with(one); });
     const double share = serial_seconds / one_thread;
     state.counters["serial_share"] = share;
     state.counters["amdahl16"] = amdahl_bound(share, 16.0);
     state.counters["amdahl64"] = amdahl_bound(share, 64.0);
-    state.counters["model16"] = one_thread / modelled_seconds(mesh, options, target, 16);
-    state.counters["model64"] = one_thread / modelled_seconds(mesh, options, target, 64);
+    state.counters["model16"] = one_thread / modelled_seconds(options, 16, prepare, draw_with);
+    state.counters["model64"] = one_thread / modelled_seconds(options, 64, prepare, draw_with);
   }
 }
 

@@ -72,6 +72,8 @@ METHOD_NAME = re.compile(r"^ShadingMethod/(?P<isa>[a-z0-9_]+)/(?P<method>[a-z_]+
 SAMPLE_NAME = re.compile(r"^Sample/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<stream>[a-z_]+)$")
 DRAW_NAME = re.compile(
     r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<derivatives>[a-z]+)$")
+TEXTURED_ALL_NAME = re.compile(r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/threads:all/(?P<filter>[a-z_]+)/"
+                               r"quad/real_time$")
 PEER_NAME = re.compile(r"^SamplePeer/oiio/(?P<mode>[a-z0-9_]+)/(?P<stream>[a-z_]+)$")
 DRAW_PEER_NAME = re.compile(r"^DrawPeer/(?P<peer>[a-z0-9_]+)/threads:(?P<threads>[a-z0-9]+)/"
                             r"(?P<workload>.+?)(/manual_time)?$")
@@ -437,6 +439,24 @@ def print_textured_draw(draws, samples):
           "depth, texture coordinates, derivatives and the colour write")
 
 
+def print_textured_threads(all_draws, draws):
+    """Textured draw() on every core against one thread, and the speed-ups its schedule allows on
+    16 and 64 threads (model16, model64; bench/README.md)."""
+    print("textured drawing on every core (TexturedDraw/<isa>/threads:all/<filter>/quad, "
+          "wall-clock time) against one thread (CPU time), pixels/s")
+    header = ["filter", "ISA", "all cores", "one thread", "all / one", "model 16", "model 64"]
+    rows = []
+    for (name, isa), entry in sorted(all_draws.items(),
+                                     key=lambda kv: (kv[0][0], ISA_ORDER.index(kv[0][1]))):
+        one = draws.get((name, isa, "quad"), {}).get("items_per_second")
+        rate = entry.get("items_per_second")
+        rows.append([name, isa, si(rate, "/s") if rate else "-", si(one, "/s") if one else "-",
+                     f"{rate / one:.2f}x" if rate and one else "-",
+                     f"{entry['model16']:.3g}x" if "model16" in entry else "-",
+                     f"{entry['model64']:.3g}x" if "model64" in entry else "-"])
+    print_table(header, rows)
+
+
 def print_draw_peers(peers, shading, draws):
     """edgewise against a drawing peer on the same work, per workload and thread setting."""
     def edgewise_entry(workload, isa):
@@ -682,6 +702,7 @@ def main(argv):
     samples = collect(results, SAMPLE_NAME, lambda m: (m["filter"], m["stream"], m["isa"]))
     peers = collect(results, PEER_NAME, lambda m: (m["mode"], m["stream"]))
     draws = collect(results, DRAW_NAME, lambda m: (m["filter"], m["isa"], m["derivatives"]))
+    textured_all = collect(results, TEXTURED_ALL_NAME, lambda m: (m["filter"], m["isa"]))
     draw_peers = collect(results, DRAW_PEER_NAME,
                          lambda m: (m["peer"], m["workload"], m["threads"]))
     multisample = collect(results, MULTISAMPLE_NAME,
@@ -706,6 +727,8 @@ def main(argv):
                                        (print_methods, methods, (methods,)),
                                        (print_sampling, samples, (samples, peers)),
                                        (print_textured_draw, draws, (draws, samples)),
+                                       (print_textured_threads, textured_all,
+                                        (textured_all, draws)),
                                        (print_draw_peers, draw_peers,
                                         (draw_peers, shading, draws)),
                                        (print_multisample, multisample,

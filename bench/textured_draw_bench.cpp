@@ -13,7 +13,8 @@
 // anisotropic with quad derivatives; the reference bilinear and trilinear on a quarter of the
 // screen (its scissor), as it takes about a second per full frame.
 // TexturedDraw/<isa>/threads:all/<filter>/quad: bilinear, trilinear and anisotropic on every
-// core (wall-clock time), for every vectorized ISA.
+// core (wall-clock time), for every vectorized ISA, with model16 and model64: the speed-ups the
+// draw's schedule allows on 16 and 64 threads (schedule_model.hpp).
 #include <benchmark/benchmark.h>
 
 #include <cstddef>
@@ -23,6 +24,7 @@
 
 #include "bench_texture.hpp"
 #include "benchmarks.hpp"
+#include "schedule_model.hpp"
 #include "edgewise/edgewise.hpp"
 
 namespace edgewise::bench {
@@ -53,6 +55,15 @@ void textured_draw(benchmark::State& state, Isa isa, TextureFilter filter,
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
                           static_cast<std::int64_t>(pixels));
+  if (threads != 1) {  // the speed-ups the draw's schedule allows on 16 and 64 threads
+    const auto prepare = [&] { target.clear(kGroundPlaneClearColor, kGroundPlaneClearDepth); };
+    const auto draw_with = [&](const DrawOptions& with) { draw(target, mesh.mesh(), with); };
+    DrawOptions one = options;
+    one.threads = 1;
+    const double one_thread = median_seconds(prepare, [&] { draw_with(one); });
+    state.counters["model16"] = one_thread / modelled_seconds(options, 16, prepare, draw_with);
+    state.counters["model64"] = one_thread / modelled_seconds(options, 64, prepare, draw_with);
+  }
   if (isa == Isa::reference) return;  // a quarter of the screen
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(pixels) * 4);
   target.read_rgba8(rgba);
