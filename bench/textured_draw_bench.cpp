@@ -24,8 +24,8 @@
 
 #include "bench_texture.hpp"
 #include "benchmarks.hpp"
-#include "schedule_model.hpp"
 #include "edgewise/edgewise.hpp"
+#include "schedule_model.hpp"
 
 namespace edgewise::bench {
 namespace {

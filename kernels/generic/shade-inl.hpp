@@ -76,8 +76,13 @@ class ShadingVisitor {
   // begin_triangle() for each.
   void begin_group(const GroupCorners<Arch>& corners, const TriangleGroup<Arch>& positions) {
     PlaneGroupInput<Arch> in;
-    const bool multisampled = pattern_.size() > 1;
-    bool all_uniform = colour_planes_ && !multisampled;
+    // One colour at all three vertices (a mesh without colours, a material's colour): its
+    // planes would interpolate that colour, so it is used as it is, as flat shading uses it.
+    // Not on a multisampled target: there a pixel is shaded at its centre, which may lie outside
+    // the triangle, where the plane of 1 / w can fall below its smallest vertex value and the
+    // reference's weights, kept from falling below it, scale the colour down.
+    const bool may_be_uniform = colour_planes_ && pattern_.size() <= 1;
+    bool all_uniform = may_be_uniform;
     for (std::size_t l = 0; l < kSetupLanes<Arch>; ++l) {
       const bool valid = corners.valid[l];  // a bad index reads nothing; the lane is not drawn
       for (int i = 0; i < 3; ++i) {
@@ -93,13 +98,8 @@ class ShadingVisitor {
           in.normal[i][2][l] = normal.z;
         }
       }
-      // One colour at all three vertices (a mesh without colours, a material's colour): its
-      // planes would interpolate that colour, so it is used as it is, as flat shading uses it.
-      // Compared as bits: one load and compare per vertex. Not on a multisampled target: there
-      // a pixel is shaded at its centre, which may lie outside the triangle, where the plane of
-      // 1 / w can fall below its smallest vertex value and the reference's weights, kept from
-      // falling below it, scale the colour down.
-      group_uniform_[l] = colour_planes_ && !multisampled;
+      // Compared as bits: one load and compare per vertex.
+      group_uniform_[l] = may_be_uniform;
       if (group_uniform_[l] && valid) {
         const Vec4* colors = batch_.colors;
         const Vec4& first = colors[corners.vertex[l][0]];
