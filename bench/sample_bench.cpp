@@ -58,13 +58,15 @@ const std::vector<TextureQuery>& queries(Stream stream) {
   return stream == Stream::ground_plane ? ground : magnified;
 }
 
-void sample_stream(benchmark::State& state, Isa isa, TextureFilter filter, Stream stream) {
+void sample_stream(benchmark::State& state, Isa isa, TextureFilter filter, Stream stream,
+                   FilterPrecision precision) {
   const Texture& t = checkerboard_texture();
   std::span<const TextureQuery> q = queries(stream);
   if (isa == Isa::reference) q = q.first(q.size() / kReferenceQueryShare);
   std::vector<Vec4> out(q.size());
   SampleOptions options{SamplerOptions{}, isa};
   options.sampler.filter = filter;
+  options.sampler.precision = precision;
   for (auto _ : state) {
     sample(t, options, q, out);
     benchmark::DoNotOptimize(out.data());
@@ -156,7 +158,16 @@ void register_sample_benchmarks() {
         const auto filter = static_cast<TextureFilter>(f);
         const std::string name = "Sample/" + std::string(name_of(isa)) + "/" +
                                  std::string(name_of(filter)) + "/" + stream_name(stream);
-        benchmark::RegisterBenchmark(name.c_str(), sample_stream, isa, filter, stream)
+        benchmark::RegisterBenchmark(name.c_str(), sample_stream, isa, filter, stream,
+                                     FilterPrecision::automatic)
+            ->Unit(benchmark::kMillisecond);
+        // The other precision of the taps beside the default, named by a suffix.
+        if (isa == Isa::reference ||
+            effective_precision(checkerboard_texture(), {filter}) == FilterPrecision::float32) {
+          continue;
+        }
+        benchmark::RegisterBenchmark((name + "/float32").c_str(), sample_stream, isa, filter,
+                                     stream, FilterPrecision::float32)
             ->Unit(benchmark::kMillisecond);
       }
     }

@@ -31,10 +31,11 @@ namespace edgewise::bench {
 namespace {
 
 void textured_draw(benchmark::State& state, Isa isa, TextureFilter filter,
-                   TextureDerivatives derivatives, std::size_t threads) {
+                   TextureDerivatives derivatives, std::size_t threads, FilterPrecision precision) {
   const texture_scene::ViewMesh& mesh = ground_plane_mesh();
   DrawOptions options = ground_plane_options(isa, filter, derivatives);
   options.threads = threads;
+  options.texture->sampler.precision = precision;
   std::uint64_t pixels = static_cast<std::uint64_t>(kWidth) * kHeight;
   if (isa == Isa::reference) {
     options.scissor = PixelRect{0, 0, kWidth / 2, kHeight / 2};
@@ -92,13 +93,19 @@ void register_textured_draw_benchmarks() {
                                  std::string(name_of(filter)) + "/" +
                                  std::string(name_of(derivatives));
         benchmark::RegisterBenchmark(name.c_str(), textured_draw, isa, filter, derivatives,
-                                     std::size_t{1})
+                                     std::size_t{1}, FilterPrecision::automatic)
             ->Unit(benchmark::kMillisecond);
         if (isa == Isa::reference || !common || derivatives != TextureDerivatives::quad) continue;
+        // The other precision of the taps beside the default, named by a suffix.
+        if (effective_precision(checkerboard_texture(), {filter}) != FilterPrecision::float32) {
+          benchmark::RegisterBenchmark((name + "/float32").c_str(), textured_draw, isa, filter,
+                                       derivatives, std::size_t{1}, FilterPrecision::float32)
+              ->Unit(benchmark::kMillisecond);
+        }
         const std::string all = "TexturedDraw/" + std::string(name_of(isa)) + "/threads:all/" +
                                 std::string(name_of(filter)) + "/quad";
         benchmark::RegisterBenchmark(all.c_str(), textured_draw, isa, filter, derivatives,
-                                     std::size_t{0})
+                                     std::size_t{0}, FilterPrecision::automatic)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
       }

@@ -48,6 +48,7 @@ TEST(Names, EveryEnumRoundTrips) {
   expect_names_round_trip<TextureFilter>(11);
   expect_names_round_trip<WrapMode>(3);
   expect_names_round_trip<LodFormula>(2);
+  expect_names_round_trip<FilterPrecision>(3);
   expect_names_round_trip<TexelFormat>(2);
   expect_names_round_trip<ColorEncoding>(2);
   expect_names_round_trip<PyramidFilter>(2);

@@ -18,8 +18,8 @@
 
 #include "../src/level_of_detail.hpp"
 #include "fast_log2-inl.hpp"
+#include "float_taps-inl.hpp"
 #include "texel_fetch-inl.hpp"
-#include "texel_pairs-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
@@ -52,7 +52,9 @@ EDGEWISE_INLINE void accumulate(Rgba<Arch>& sum, const Rgba<Arch>& value,
     sum.c[k] = xsimd::fma(value.c[k], weight, sum.c[k]);
 }
 
-template <class Arch>
+// Sums: how the bilinear taps of 8-bit textures are weighted and summed, FloatTapSums or
+// FixedTapSums (fixed_taps-inl.hpp; linear 8-bit textures only).
+template <class Arch, class Sums = FloatTapSums<Arch>>
 class TextureFilters {
  public:
   using Floats = xsimd::batch<float, Arch>;
@@ -79,9 +81,9 @@ class TextureFilters {
     const Floats sr = reduce_coordinate<Arch>(s, options_.wrap_s);
     const Floats tr = reduce_coordinate<Arch>(t, options_.wrap_t);
     if (texture_.format == TexelFormat::rgba8) {
-      PairSums sums = zero_pair_sums();
+      Sums sums(texture_);
       add_bilinear(sums, level, sr, tr, Floats(1.0f));
-      return total(sums);
+      return sums.total();
     }
     const Floats u = sr * level.widthf - Floats(0.5f);
     const Floats v = tr * level.heightf - Floats(0.5f);
@@ -161,10 +163,10 @@ class TextureFilters {
   [[gnu::always_inline]] Rgba<Arch> trilinear(Floats s, Floats t, Floats lambda) const {
     const LevelPair levels = level_pair(lambda);
     if (texture_.format == TexelFormat::rgba8) {
-      PairSums sums = zero_pair_sums();
+      Sums sums(texture_);
       add_trilinear(sums, levels, reduce_coordinate<Arch>(s, options_.wrap_s),
                     reduce_coordinate<Arch>(t, options_.wrap_t), Floats(1.0f));
-      return total(sums);
+      return sums.total();
     }
     const Rgba<Arch> fine = bilinear(levels.fine, s, t);
     if (!levels.blends) return fine;
@@ -218,21 +220,28 @@ class TextureFilters {
     const Floats inverse = Floats(1.0f) / probes;
     const LevelPair levels = level_pair(lambda);  // every probe's
     const bool pairs = texture_.format == TexelFormat::rgba8;
-    PairSums pair_sums = zero_pair_sums();
+    Sums pair_sums(texture_);
     Rgba<Arch> sum = zero_rgba<Arch>();
     for (int k = 0; k < static_cast<int>(most); ++k) {
       const Floats kf(static_cast<float>(k));
       const Floats offset = (kf + Floats(0.5f)) * inverse - Floats(0.5f);
-      const Floats weight = xsimd::select(kf < probes, inverse, Floats(0.0f));
+      const auto used = kf < probes;
       const Floats s = q.s + offset * ds, t = q.t + offset * dt;
       if (pairs) {
+        // Each probe at full weight, the mean taken once: fixed-point weights then round
+        // relative to 1, not to 1 / probes.
         add_trilinear(pair_sums, levels, reduce_coordinate<Arch>(s, options_.wrap_s),
-                      reduce_coordinate<Arch>(t, options_.wrap_t), weight);
+                      reduce_coordinate<Arch>(t, options_.wrap_t),
+                      xsimd::select(used, Floats(1.0f), Floats(0.0f)));
       } else {
-        accumulate<Arch>(sum, trilinear(s, t, lambda), weight);
+        accumulate<Arch>(sum, trilinear(s, t, lambda), xsimd::select(used, inverse, Floats(0.0f)));
       }
     }
-    return pairs ? total(pair_sums) : sum;
+    if (!pairs) return sum;
+    Rgba<Arch> mean = pair_sums.total();
+    for (int k = 0; k < 4; ++k)
+      mean.c[k] = mean.c[k] * inverse;
+    return mean;
   }
 
   Rgba<Arch> ripmap(const QueryLanes<Arch>& q) const {
@@ -325,29 +334,11 @@ class TextureFilters {
   }
 
  private:
-  // Weighted sums of 8-bit texels in the pair layout (texel_pairs-inl.hpp), per channel.
-  struct PairSums {
-    Pairs<float, Arch> c[4];
-  };
-  static PairSums zero_pair_sums() {
-    const Floats zero(0.0f);
-    PairSums sums;
-    for (auto& channel : sums.c)
-      channel = {zero, zero};
-    return sums;
-  }
-  [[gnu::always_inline]] static Rgba<Arch> total(const PairSums& sums) {
-    Rgba<Arch> out;
-    for (int k = 0; k < 4; ++k)
-      out.c[k] = sum_pairs<Arch>(sums.c[k]);
-    return out;
-  }
-
   // sums += weight * the bilinear filter of `level` at coordinates already reduced by the wrap
   // modes, for 8-bit texels: each tap row's two texels by one 64-bit load per lane where no lane's
   // row wraps between them (the usual case: a row wraps at one texel in w), else by a load per
   // texel; the same sums either way.
-  [[gnu::always_inline]] void add_bilinear(PairSums& sums, const LevelLanes<Arch>& level, Floats sr,
+  [[gnu::always_inline]] void add_bilinear(Sums& sums, const LevelLanes<Arch>& level, Floats sr,
                                            Floats tr, Floats weight) const {
     const Floats u = sr * level.widthf - Floats(0.5f);
     const Floats v = tr * level.heightf - Floats(0.5f);
@@ -361,18 +352,8 @@ class TextureFilters {
     const Ints xa = columns.first, xb = columns.second;
     const Floats gu = Floats(1.0f) - fu;
     const bool adjacent = xsimd::all(xb == xa + Ints(1));
-    const auto* texels = reinterpret_cast<const std::int32_t*>(texture_.texels);
     const auto add_row = [&](Ints row, Floats row_weight) EDGEWISE_INLINE_LAMBDA {
-      const Pairs<std::int32_t, Arch> texel =
-          adjacent ? load_texel_pairs<Arch>(texture_.texels, row + xa)
-                   : make_pairs<std::int32_t, Arch>(load_lanes_int32<Arch>(texels, row + xa),
-                                                    load_lanes_int32<Arch>(texels, row + xb));
-      const Pairs<float, Arch> w = make_pairs<float, Arch>(gu * row_weight, fu * row_weight);
-      for (int k = 0; k < 4; ++k) {
-        Pairs<float, Arch>& sum = sums.c[k];
-        sum.low = xsimd::fma(decode_channel<Arch>(texture_, texel.low, k), w.low, sum.low);
-        sum.high = xsimd::fma(decode_channel<Arch>(texture_, texel.high, k), w.high, sum.high);
-      }
+      sums.add(row + xa, row + xb, adjacent, gu * row_weight, fu * row_weight);
     };
     add_row(level.start + ya * level.width, (Floats(1.0f) - fv) * weight);
     add_row(level.start + yb * level.width, fv * weight);
@@ -400,7 +381,7 @@ class TextureFilters {
   }
 
   // sums += weight * the trilinear filter at reduced coordinates, for 8-bit texels.
-  [[gnu::always_inline]] void add_trilinear(PairSums& sums, const LevelPair& levels, Floats sr,
+  [[gnu::always_inline]] void add_trilinear(Sums& sums, const LevelPair& levels, Floats sr,
                                             Floats tr, Floats weight) const {
     add_bilinear(sums, levels.fine, sr, tr, weight * (Floats(1.0f) - levels.f));
     if (levels.blends) add_bilinear(sums, levels.coarse, sr, tr, weight * levels.f);

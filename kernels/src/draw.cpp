@@ -111,6 +111,7 @@ ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
     batch.texture = options.texture->texture;
     batch.texture_description = texture;
     batch.sampler = options.texture->sampler;
+    batch.sampler.precision = effective_precision(*options.texture->texture, batch.sampler);
     batch.derivatives = options.texture->derivatives;
   }
   // Multisampled pixels are shaded at centres that may lie outside the triangle, where the

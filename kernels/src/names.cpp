@@ -317,6 +317,25 @@ std::span<const LodFormula> values_of<LodFormula>() {
   return kValues;
 }
 
+std::string_view name_of(FilterPrecision value) {
+  switch (value) {
+    case FilterPrecision::automatic:
+      return "automatic";
+    case FilterPrecision::float32:
+      return "float32";
+    case FilterPrecision::fixed16:
+      return "fixed16";
+  }
+  return "unknown";
+}
+
+template <>
+std::span<const FilterPrecision> values_of<FilterPrecision>() {
+  static constexpr FilterPrecision kValues[] = {FilterPrecision::automatic,
+                                                FilterPrecision::float32, FilterPrecision::fixed16};
+  return kValues;
+}
+
 std::string_view name_of(TexelFormat value) {
   switch (value) {
     case TexelFormat::rgba8:

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "kernel_table.hpp"
+#include "sample_kernels.hpp"
 #include "texture_description.hpp"
 
 namespace edgewise {
@@ -20,8 +21,23 @@ void sample(const Texture& texture, const SampleOptions& options,
   const Isa chosen = resolve_isa(options.isa);
   if (queries.empty()) return;
   const detail::FlatTexture flat(texture);
-  detail::kernel_table(chosen).sample(flat.description(), options.sampler, queries.data(),
-                                      queries.size(), out.data());
+  SamplerOptions resolved = options.sampler;
+  resolved.precision = effective_precision(texture, resolved);
+  detail::kernel_table(chosen).sample(flat.description(), resolved, queries.data(), queries.size(),
+                                      out.data());
+}
+
+FilterPrecision default_precision(TextureFilter filter) {
+  return detail::reads_bilinear_taps(filter) ? FilterPrecision::fixed16 : FilterPrecision::float32;
+}
+
+FilterPrecision effective_precision(const Texture& texture, const SamplerOptions& options) {
+  const bool applies = texture.format() == TexelFormat::rgba8 &&
+                       texture.encoding() == ColorEncoding::linear &&
+                       detail::reads_bilinear_taps(options.filter);
+  if (!applies) return FilterPrecision::float32;
+  return options.precision == FilterPrecision::automatic ? default_precision(options.filter)
+                                                         : options.precision;
 }
 
 }  // namespace edgewise

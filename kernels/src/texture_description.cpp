@@ -38,6 +38,11 @@ void validate_sampler(const Texture& texture, const SamplerOptions& options,
                                 std::to_string(options.supersample_taps) + " is outside 1 .. " +
                                 std::to_string(kMaxSupersampleTaps));
   }
+  if (static_cast<int>(options.precision) > static_cast<int>(FilterPrecision::fixed16)) {
+    throw std::invalid_argument(prefix + "precision " +
+                                std::to_string(static_cast<int>(options.precision)) +
+                                " is not a FilterPrecision");
+  }
   if (!std::isfinite(options.lod_bias))
     throw std::invalid_argument(prefix + "lod_bias is not finite");
   if (options.filter == TextureFilter::ripmap && texture.ripmap_levels().empty()) {

@@ -117,6 +117,16 @@ double sample_bound(const Texture& texture, const TextureExtremes& t, const Samp
                           : 0.0;
   const double probes = options.filter == TextureFilter::anisotropic ? options.max_anisotropy : 0.0;
   error += rounding + (taps + probes) * 0x1p-24 * t.largest;
+  if (effective_precision(texture, options) == FilterPrecision::fixed16) {
+    // Each tap weight rounded to a multiple of 2^-15 (or 1 made 32767 / 32768): off by at most
+    // 2^-15, so the exact integer sum by at most 2^-15 T per weight. Supersample and ripmap
+    // average bilinear results (4 weights each) with float weights adding up to 1; trilinear
+    // has 8 weights, and so has each anisotropic probe, summed at full weight and then averaged.
+    const bool eight =
+        options.filter == TextureFilter::trilinear || options.filter == TextureFilter::anisotropic;
+    const double weights = eight ? 8.0 : 4.0;
+    error += weights * 0x1p-15 * t.largest;
+  }
   return error;
 }
 

@@ -18,6 +18,7 @@
 // - rounding: weights, products and sums in float add at most (64 + taps^2 + probes) 2^-24 times
 //   the largest texel magnitude T: 64 covers a bicubic's 16 products and its weights' own
 //   roundings, taps^2 and probes the terms of the supersample and anisotropic means.
+// - fixed point (FilterPrecision::fixed16): every tap weight off by at most 2^-15, T each.
 // Discontinuities are accepted on either side: nearest's texel choice (positions moved by the
 // position error), mip_nearest's level choice (lambda moved by its error) and the anisotropic
 // probe count (the minor axis scaled by 1 +- 2^-18).

@@ -157,15 +157,17 @@ TEST_P(SampleDifferential, EveryFilterWithinItsBoundOfTheReference) {
   std::uint64_t seed = 100;
   for (const TestTexture& t : textures) {
     for (const FilterCase& c : filter_cases()) {
-      for (int w = 0; w < 3; ++w) {
+      for (int w = 0; w < 6; ++w) {
         SamplerOptions options;
+        // Both precisions of the taps, on alternate wrap pairs.
+        options.precision = w < 3 ? FilterPrecision::float32 : FilterPrecision::fixed16;
         options.filter = c.filter;
         options.supersample_taps = c.supersample_taps;
         options.max_anisotropy = c.max_anisotropy;
         options.lod = c.lod;
         options.lod_bias = c.lod_bias;
-        options.wrap_s = wraps[w];
-        options.wrap_t = wraps[(w + 1) % 3];
+        options.wrap_s = wraps[w % 3];
+        options.wrap_t = wraps[(w + 1 + w / 3) % 3];
         Random random(++seed);
         const std::vector<TextureQuery> queries = random_queries(random, t.texture, per_case);
         std::vector<Vec4> fast(queries.size());
@@ -256,34 +258,86 @@ TEST_P(SampleDifferential, TexelPairsAndSingleTexelsGiveTheSameBits) {
     for (TextureFilter filter :
          {TextureFilter::bilinear, TextureFilter::trilinear, TextureFilter::anisotropic}) {
       for (WrapMode wrap : {WrapMode::repeat, WrapMode::clamp_to_edge, WrapMode::mirror}) {
-        SamplerOptions options;
-        options.filter = filter;
-        options.wrap_s = options.wrap_t = wrap;
-        Random random(static_cast<std::uint64_t>(filter) * 3 + static_cast<std::uint64_t>(wrap));
-        std::vector<TextureQuery> queries(37);
-        for (TextureQuery& q : queries) {
-          q.s = static_cast<float>(random.uniform(0.25, 0.45));
-          q.t = static_cast<float>(random.uniform(0.25, 0.45));
-          // Up to 3 texels of level 0 per pixel: lambda below 2, levels of 16 x 12 texels or more.
-          q.dsdx = static_cast<float>(random.uniform(0.2, 3.0) / 64.0);
-          q.dtdx = static_cast<float>(random.uniform(-0.5, 0.5) / 48.0);
-          q.dsdy = static_cast<float>(random.uniform(-0.5, 0.5) / 64.0);
-          q.dtdy = static_cast<float>(random.uniform(0.2, 3.0) / 48.0);
-        }
-        std::vector<Vec4> together(queries.size()), apart(queries.size());
-        sample(t.texture, {options, isa()}, queries, together);
-        queries[0].s = 0.999f;  // x0 = 63 in level 0: the row wraps (repeat) or clamps
-        sample(t.texture, {options, isa()}, queries, apart);
-        for (std::size_t i = 1; i < queries.size(); ++i) {
-          const float a[4] = {together[i].x, together[i].y, together[i].z, together[i].w};
-          const float b[4] = {apart[i].x, apart[i].y, apart[i].z, apart[i].w};
-          for (int k = 0; k < 4; ++k) {
-            ASSERT_EQ(a[k], b[k]) << name_of(filter) << " " << name_of(wrap) << " query " << i
-                                  << " channel " << k;
+        for (FilterPrecision precision : {FilterPrecision::float32, FilterPrecision::fixed16}) {
+          SamplerOptions options;
+          options.precision = precision;
+          options.filter = filter;
+          options.wrap_s = options.wrap_t = wrap;
+          Random random(static_cast<std::uint64_t>(filter) * 3 + static_cast<std::uint64_t>(wrap));
+          std::vector<TextureQuery> queries(37);
+          for (TextureQuery& q : queries) {
+            q.s = static_cast<float>(random.uniform(0.25, 0.45));
+            q.t = static_cast<float>(random.uniform(0.25, 0.45));
+            // Up to 3 texels of level 0 per pixel: lambda below 2, levels of 16 x 12 texels or
+            // more.
+            q.dsdx = static_cast<float>(random.uniform(0.2, 3.0) / 64.0);
+            q.dtdx = static_cast<float>(random.uniform(-0.5, 0.5) / 48.0);
+            q.dsdy = static_cast<float>(random.uniform(-0.5, 0.5) / 64.0);
+            q.dtdy = static_cast<float>(random.uniform(0.2, 3.0) / 48.0);
+          }
+          std::vector<Vec4> together(queries.size()), apart(queries.size());
+          sample(t.texture, {options, isa()}, queries, together);
+          queries[0].s = 0.999f;  // x0 = 63 in level 0: the row wraps (repeat) or clamps
+          sample(t.texture, {options, isa()}, queries, apart);
+          for (std::size_t i = 1; i < queries.size(); ++i) {
+            const float a[4] = {together[i].x, together[i].y, together[i].z, together[i].w};
+            const float b[4] = {apart[i].x, apart[i].y, apart[i].z, apart[i].w};
+            for (int k = 0; k < 4; ++k) {
+              ASSERT_EQ(a[k], b[k]) << name_of(filter) << " " << name_of(wrap) << " "
+                                    << name_of(precision) << " query " << i << " channel " << k;
+            }
           }
         }
       }
     }
+  }
+}
+
+// fixed16 weighs a tap row's two texels by integers in units of 2^-15 and sums exactly: on a
+// 2x1 texture of red codes 0 and 255, s = 0.4 puts the tap at u = 0.8f - 0.5f (exact), so the
+// right texel's weight is round(u 2^15) = 9830 and red is 9830 * 255 / 2^15 codes, where float32
+// gives u * 255. Alpha (255 on both) sums to exactly 255 in both.
+TEST_P(SampleDifferential, FixedPointTapsWeighByFifteenBitIntegers) {
+  const std::vector<std::uint8_t> texels = {0, 0, 0, 255, 255, 0, 0, 255};
+  const Texture texture = Texture::from_rgba8(2, 1, texels, ColorEncoding::linear);
+  const std::vector<TextureQuery> queries(5, TextureQuery{0.4f, 0.5f, 0, 0, 0, 0});
+  const float u = 0.8f - 0.5f;
+  for (FilterPrecision precision : {FilterPrecision::float32, FilterPrecision::fixed16}) {
+    SamplerOptions options;
+    options.filter = TextureFilter::bilinear;
+    options.precision = precision;
+    std::vector<Vec4> out(queries.size());
+    sample(texture, {options, isa()}, queries, out);
+    // One rounding of the sum's scaling and one of the code scale 1 / 255 apart from the exact.
+    const double expected = precision == FilterPrecision::fixed16 ? 9830.0 / 32768.0 : double(u);
+    for (const Vec4& v : out) {
+      EXPECT_NEAR(v.x, expected, 0x1p-22) << name_of(precision);
+      EXPECT_NEAR(v.w, 1.0, 0x1p-23) << name_of(precision);
+    }
+  }
+  EXPECT_GT(double(u) - 9830.0 / 32768.0, 0x1p-20);  // the two expectations are told apart
+}
+
+TEST(SamplePrecision, FixedPointOnlyWhereItApplies) {
+  const std::vector<std::uint8_t> texels(4 * 4 * 4, 128);
+  const Texture linear = Texture::from_rgba8(4, 4, texels, ColorEncoding::linear);
+  const Texture srgb = Texture::from_rgba8(4, 4, texels, ColorEncoding::srgb);
+  const std::vector<float> floats(4 * 4 * 4, 0.5f);
+  const Texture hdr = Texture::from_rgba32f(4, 4, floats);
+  SamplerOptions options;
+  options.filter = TextureFilter::trilinear;
+  options.precision = FilterPrecision::fixed16;
+  EXPECT_EQ(effective_precision(linear, options), FilterPrecision::fixed16);
+  EXPECT_EQ(effective_precision(srgb, options), FilterPrecision::float32);
+  EXPECT_EQ(effective_precision(hdr, options), FilterPrecision::float32);
+  options.precision = FilterPrecision::automatic;
+  EXPECT_EQ(effective_precision(linear, options), default_precision(TextureFilter::trilinear));
+  for (TextureFilter filter : {TextureFilter::nearest, TextureFilter::bicubic_catmull_rom,
+                               TextureFilter::summed_area, TextureFilter::ewa}) {
+    options.filter = filter;
+    options.precision = FilterPrecision::fixed16;
+    EXPECT_EQ(effective_precision(linear, options), FilterPrecision::float32) << name_of(filter);
+    EXPECT_EQ(default_precision(filter), FilterPrecision::float32) << name_of(filter);
   }
 }
 
@@ -302,6 +356,9 @@ TEST(SampleArguments, RejectsMismatchedSpansAndOptionsOutOfRange) {
   EXPECT_THROW(sample(t.texture, options, queries, out), std::invalid_argument);
   options = {};
   options.lod_bias = std::numeric_limits<float>::infinity();
+  EXPECT_THROW(sample(t.texture, options, queries, out), std::invalid_argument);
+  options = {};
+  options.precision = static_cast<FilterPrecision>(3);
   EXPECT_THROW(sample(t.texture, options, queries, out), std::invalid_argument);
   const std::vector<std::uint8_t> texels(4 * 4 * 4, 128);
   const Texture bare = Texture::from_rgba8(4, 4, texels, ColorEncoding::linear);

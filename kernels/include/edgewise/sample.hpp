@@ -90,6 +90,17 @@ enum class WrapMode : std::uint8_t {
 
 enum class LodFormula : std::uint8_t { exact, max_axis };
 
+// The arithmetic of the bilinear taps on linear 8-bit textures (the taps of bilinear,
+// mip_nearest, trilinear, supersample, ripmap and anisotropic):
+//   float32  texels decoded to float, weights and sums in float (a few ulps from exact)
+//   fixed16  texels as 16-bit integers, each tap's weights rounded to multiples of 2^-15 and the
+//            products summed exactly in 32-bit integers, as GPUs filter: a result is off by at
+//            most 2^-15 times the texels' largest value per tap, about 1/128 of an 8-bit step
+//            for trilinear's 8 taps
+//   automatic  the precision measured best for the filter (default_precision())
+// sRGB and float textures, and the other filters, are filtered in float32 whatever is asked.
+enum class FilterPrecision : std::uint8_t { automatic, float32, fixed16 };
+
 // The ranges of SamplerOptions' integer options.
 inline constexpr int kMaxAnisotropyLimit = 64;
 inline constexpr int kMaxSupersampleTaps = 16;
@@ -102,7 +113,17 @@ struct SamplerOptions {
   float lod_bias = 0.0f;
   int max_anisotropy = 16;   // anisotropic probes, EWA eccentricity; 1 .. kMaxAnisotropyLimit
   int supersample_taps = 4;  // N of the N x N grid; 1 .. kMaxSupersampleTaps
+  FilterPrecision precision = FilterPrecision::automatic;
 };
+
+// The precision `automatic` stands for with `filter`: fixed16 where, on every view of the texture
+// study (docs/texture-filtering.md, "Fixed-point taps"), its error against ground truth stays
+// within 0.05 dB of float32's, float32 elsewhere.
+FilterPrecision default_precision(TextureFilter filter);
+
+// The precision sample() and draw() use for `options` on `texture`: float32 wherever fixed16
+// does not apply (above), else the one asked for, `automatic` resolved by default_precision().
+FilterPrecision effective_precision(const Texture& texture, const SamplerOptions& options);
 
 // One query: the position and its screen derivatives, in texture coordinates (per pixel).
 // The same six floats, in this order, as a record of edgewise-sample's query files.
@@ -138,5 +159,8 @@ std::span<const WrapMode> values_of<WrapMode>();
 std::string_view name_of(LodFormula value);
 template <>
 std::span<const LodFormula> values_of<LodFormula>();
+std::string_view name_of(FilterPrecision value);
+template <>
+std::span<const FilterPrecision> values_of<FilterPrecision>();
 
 }  // namespace edgewise
