@@ -210,7 +210,7 @@ void sample_filtered(const detail::TextureDescription& texture, const SamplerOpt
                                 [&](const Q& q)
                                     EDGEWISE_INLINE_LAMBDA { return f.anisotropic(q); });
       default:
-        return;  // not reached: detail::reads_bilinear_taps() chose kTapsOnly
+        return;  // not reached: reads_bilinear_taps() chose kTapsOnly
     }
   } else {
     switch (options.filter) {

@@ -27,14 +27,28 @@ void sample(const Texture& texture, const SampleOptions& options,
                                       out.data());
 }
 
+bool reads_bilinear_taps(TextureFilter filter) {
+  switch (filter) {
+    case TextureFilter::bilinear:
+    case TextureFilter::mip_nearest:
+    case TextureFilter::trilinear:
+    case TextureFilter::supersample:
+    case TextureFilter::ripmap:
+    case TextureFilter::anisotropic:
+      return true;
+    default:
+      return false;
+  }
+}
+
 FilterPrecision default_precision(TextureFilter filter) {
-  return detail::reads_bilinear_taps(filter) ? FilterPrecision::fixed16 : FilterPrecision::float32;
+  return reads_bilinear_taps(filter) ? FilterPrecision::fixed16 : FilterPrecision::float32;
 }
 
 FilterPrecision effective_precision(const Texture& texture, const SamplerOptions& options) {
   const bool applies = texture.format() == TexelFormat::rgba8 &&
                        texture.encoding() == ColorEncoding::linear &&
-                       detail::reads_bilinear_taps(options.filter);
+                       reads_bilinear_taps(options.filter);
   if (!applies) return FilterPrecision::float32;
   return options.precision == FilterPrecision::automatic ? default_precision(options.filter)
                                                          : options.precision;

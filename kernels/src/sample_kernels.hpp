@@ -46,26 +46,11 @@ struct TextureDescription {
   std::int32_t rip_rows = 0;
 };
 
-// The filters made of bilinear taps of mip or rip levels, those FilterPrecision applies to.
-constexpr bool reads_bilinear_taps(TextureFilter filter) {
-  switch (filter) {
-    case TextureFilter::bilinear:
-    case TextureFilter::mip_nearest:
-    case TextureFilter::trilinear:
-    case TextureFilter::supersample:
-    case TextureFilter::ripmap:
-    case TextureFilter::anisotropic:
-      return true;
-    default:
-      return false;
-  }
-}
-
 // Whether the kernels filter in fixed point: `options` as the callers pass them, with
 // effective_precision() (sample.hpp) already applied.
 inline bool fixed_point_taps(const TextureDescription& texture, const SamplerOptions& options) {
   return options.precision == FilterPrecision::fixed16 && texture.format == TexelFormat::rgba8 &&
-         texture.srgb_table == nullptr && reads_bilinear_taps(options.filter);
+         texture.srgb_table == nullptr && edgewise::reads_bilinear_taps(options.filter);
 }
 
 // out[i] = the filtered linear RGBA at queries[i]: each ISA's `sample` kernel (kernel_table.hpp).

@@ -40,8 +40,30 @@ TEST(FilterMethods, EveryFilterWithUniqueNames) {
       // Names start with the filter's own name, so a reader of the scores can tell it.
       EXPECT_EQ(method.name.rfind(std::string(name_of(filter)), 0), 0u) << method.name;
     }
-    EXPECT_EQ(count, filter == TextureFilter::supersample ? 2 : 1) << name_of(filter);
+    // Both precisions of the filters made of bilinear taps; supersample at two grids.
+    const int precisions = reads_bilinear_taps(filter) ? 2 : 1;
+    EXPECT_EQ(count, (filter == TextureFilter::supersample ? 2 : 1) * precisions)
+        << name_of(filter);
   }
+}
+
+TEST(FilterMethods, FixedPointVariantsNamedAndNeverAutomatic) {
+  for (const FilterMethod& method : filter_methods(MethodSettings{})) {
+    EXPECT_NE(method.options.precision, FilterPrecision::automatic) << method.name;
+    const bool suffixed =
+        method.name.size() > 8 && method.name.compare(method.name.size() - 8, 8, "_fixed16") == 0;
+    EXPECT_EQ(suffixed, method.options.precision == FilterPrecision::fixed16) << method.name;
+    if (!reads_bilinear_taps(method.options.filter)) {
+      EXPECT_EQ(method.options.precision, FilterPrecision::float32) << method.name;
+    }
+  }
+  MethodSettings only_fixed;
+  only_fixed.precisions = {FilterPrecision::fixed16};
+  only_fixed.filters = {TextureFilter::trilinear, TextureFilter::ewa};
+  const std::vector<FilterMethod> methods = filter_methods(only_fixed);
+  ASSERT_EQ(methods.size(), 2u);
+  EXPECT_EQ(methods[0].name, "trilinear_fixed16");
+  EXPECT_EQ(methods[1].name, "ewa_16x");  // no taps: float32 whatever is asked
 }
 
 TEST(FilterMethods, SupersampleAtTheDefaultAndTheDenseGrid) {
@@ -49,8 +71,10 @@ TEST(FilterMethods, SupersampleAtTheDefaultAndTheDenseGrid) {
   for (const FilterMethod& method : filter_methods(MethodSettings{})) {
     if (method.options.filter == TextureFilter::supersample) {
       taps.insert(method.options.supersample_taps);
-      EXPECT_EQ(method.name, "supersample_" + std::to_string(method.options.supersample_taps) +
-                                 "x" + std::to_string(method.options.supersample_taps));
+      const std::string grid = "supersample_" + std::to_string(method.options.supersample_taps) +
+                               "x" + std::to_string(method.options.supersample_taps);
+      EXPECT_EQ(method.name,
+                method.options.precision == FilterPrecision::fixed16 ? grid + "_fixed16" : grid);
     }
   }
   EXPECT_EQ(taps, (std::set<int>{SamplerOptions{}.supersample_taps, kDenseSupersampleTaps}));
@@ -62,7 +86,9 @@ TEST(FilterMethods, AnisotropyGoesIntoTheOptionsAndTheNames) {
     EXPECT_EQ(method.options.wrap_s, WrapMode::repeat);
     EXPECT_EQ(method.options.wrap_t, WrapMode::repeat);
     if (method.options.filter == TextureFilter::anisotropic) {
-      EXPECT_EQ(method.name, "anisotropic_8x");
+      EXPECT_EQ(method.name, method.options.precision == FilterPrecision::fixed16
+                                 ? "anisotropic_8x_fixed16"
+                                 : "anisotropic_8x");
     }
     if (method.options.filter == TextureFilter::ewa) {
       EXPECT_EQ(method.name, "ewa_8x");
@@ -74,10 +100,13 @@ TEST(FilterMethods, OnlyTheFiltersAskedFor) {
   MethodSettings settings;
   settings.filters = {TextureFilter::ewa, TextureFilter::supersample};
   const std::vector<FilterMethod> methods = filter_methods(settings);
-  ASSERT_EQ(methods.size(), 3u);  // in TextureFilter order, supersample at both grids
+  // In TextureFilter order, supersample at both grids in both precisions.
+  ASSERT_EQ(methods.size(), 5u);
   EXPECT_EQ(methods[0].name, "supersample_4x4");
-  EXPECT_EQ(methods[1].name, "supersample_8x8");
-  EXPECT_EQ(methods[2].name, "ewa_16x");
+  EXPECT_EQ(methods[1].name, "supersample_4x4_fixed16");
+  EXPECT_EQ(methods[2].name, "supersample_8x8");
+  EXPECT_EQ(methods[3].name, "supersample_8x8_fixed16");
+  EXPECT_EQ(methods[4].name, "ewa_16x");
 }
 
 // Every method carries the formula and bias; only those whose results depend on them say so in

@@ -96,17 +96,18 @@ TEST(Quality, ReferenceScoresWithinTheSamplerBoundOfTheFastPath) {
 // cubics' overshoot, and nearest's texel choice may flip on a rounding).
 TEST(Quality, DrawnViewScoresLikeTheSampledView) {
   const std::vector<ScoreRow> reference = second_scores();
-  int compared = 0;
+  int compared = 0, continuous_methods = 0;
   for (const FilterMethod& method : filter_methods(MethodSettings{})) {
+    const TextureFilter f = method.options.filter;
+    const bool continuous = f != TextureFilter::nearest && f != TextureFilter::mip_nearest &&
+                            f != TextureFilter::bicubic_catmull_rom;
+    continuous_methods += continuous ? 1 : 0;
     for (const char* derivatives : {"quad", "analytic"}) {
       for (const char* texture : {"checkerboard", "sinusoids"}) {
         for (const char* view : {"ground_plane", "magnification"}) {
           const std::string name = "draw_" + std::string(derivatives) + "_" + method.name;
           const ScoreRow drawn = find_row(reference, texture, view, name, "reference");
           const ScoreRow sampled = find_row(reference, texture, view, method.name, "reference");
-          const TextureFilter f = method.options.filter;
-          const bool continuous = f != TextureFilter::nearest && f != TextureFilter::mip_nearest &&
-                                  f != TextureFilter::bicubic_catmull_rom;
           if (std::string(derivatives) != "analytic" || !continuous) continue;
           EXPECT_NEAR(drawn.rmse, sampled.rmse, 0.5 / 255.0 + 1e-3)
               << texture << "/" << view << "/" << name;
@@ -115,7 +116,8 @@ TEST(Quality, DrawnViewScoresLikeTheSampledView) {
       }
     }
   }
-  EXPECT_EQ(compared, 4 * (static_cast<int>(filter_methods(MethodSettings{}).size()) - 3));
+  EXPECT_EQ(compared, 4 * continuous_methods);
+  EXPECT_GT(continuous_methods, 0);
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ TEST(FirstRun, ComputedEveryGroundTruth) {
 TEST(ChosenRun, ScoresTheChosenFiltersWithTheirSettings) {
   const std::vector<ScoreRow> rows = chosen_scores();
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[0].method, "trilinear_max_axis_bias-0.5");
+  EXPECT_EQ(rows[0].method, "trilinear_max_axis_bias-0.5_fixed16");
   EXPECT_EQ(rows[1].method, "ewa_16x_bias-0.5");
   for (const ScoreRow& row : rows) {
     EXPECT_EQ(row.texture, "checkerboard");

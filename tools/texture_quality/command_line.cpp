@@ -126,6 +126,25 @@ void add_method_options(tools::CommandLine& command_line, QualitySettings& setti
       .type_name("NAME")
       .one_of(filter_names)
       .group(kMethodsGroup);
+  command_line
+      .add_values(
+          "--precision",
+          [&methods](const std::vector<std::string>& names) {
+            methods.precisions.clear();
+            for (const std::string& name : names) {
+              const FilterPrecision precision = *parse_name<FilterPrecision>(name);
+              if (std::find(methods.precisions.begin(), methods.precisions.end(), precision) !=
+                  methods.precisions.end()) {
+                throw UsageError("precision " + tools::quoted(name) + " given twice");
+              }
+              methods.precisions.push_back(precision);
+            }
+          },
+          "score the filters made of bilinear taps in this precision (repeatable;\n"
+          "default float32 and fixed16; fixed16 ends the name: trilinear_fixed16)")
+      .type_name("NAME")
+      .one_of({"float32", "fixed16"})
+      .group(kMethodsGroup);
   tools::add_max_aniso_option(command_line, methods.max_anisotropy).group(kMethodsGroup);
   tools::add_lod_option(command_line, methods.lod).group(kMethodsGroup);
   tools::add_lod_bias_option(command_line, methods.lod_bias,

@@ -47,6 +47,22 @@ std::string level_of_detail_suffix(const SamplerOptions& options) {
   return suffix;
 }
 
+// `method` in float32 and, where its filter has bilinear taps, in each precision asked for.
+void push_precisions(FilterMethod method, const MethodSettings& settings,
+                     std::vector<FilterMethod>& methods) {
+  if (!reads_bilinear_taps(method.options.filter)) {
+    method.options.precision = FilterPrecision::float32;
+    methods.push_back(method);
+    return;
+  }
+  for (FilterPrecision precision : settings.precisions) {
+    FilterMethod variant = method;
+    variant.options.precision = precision;
+    if (precision == FilterPrecision::fixed16) variant.name += "_fixed16";
+    methods.push_back(variant);
+  }
+}
+
 }  // namespace
 
 std::vector<FilterMethod> filter_methods(const MethodSettings& settings) {
@@ -69,7 +85,7 @@ std::vector<FilterMethod> filter_methods(const MethodSettings& settings) {
     switch (method.options.filter) {
       case TextureFilter::supersample:
         method.name = grid_name(method.options.supersample_taps);
-        methods.push_back(method);
+        push_precisions(method, settings, methods);
         method.options.supersample_taps = kDenseSupersampleTaps;
         method.name = grid_name(kDenseSupersampleTaps);
         break;
@@ -82,7 +98,7 @@ std::vector<FilterMethod> filter_methods(const MethodSettings& settings) {
         break;
     }
     method.name += level_of_detail_suffix(method.options);
-    methods.push_back(method);
+    push_precisions(method, settings, methods);
   }
   return methods;
 }

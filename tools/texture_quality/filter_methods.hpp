@@ -1,6 +1,7 @@
 // The edgewise filter settings that are scored: every TextureFilter (or those asked for) with the
 // level-of-detail formula and bias asked for, the anisotropic ones at the chosen max_anisotropy,
-// and supersampling also at a denser grid, to show what more taps buy.
+// supersampling also at a denser grid, to show what more taps buy, and the filters made of
+// bilinear taps in both precisions (FilterPrecision), to show what fixed point costs.
 #pragma once
 
 #include <string>
@@ -24,6 +25,8 @@ struct MethodSettings {
   LodFormula lod = LodFormula::exact;
   float lod_bias = 0.0f;               // finite
   std::vector<TextureFilter> filters;  // empty: every filter
+  // Of the filters made of bilinear taps (reads_bilinear_taps()); float32 or fixed16, in order.
+  std::vector<FilterPrecision> precisions = {FilterPrecision::float32, FilterPrecision::fixed16};
 };
 
 // Whether a filter's result depends on SamplerOptions::lod_bias, and on SamplerOptions::lod.
@@ -31,7 +34,8 @@ bool reads_lod_bias(TextureFilter filter);
 bool reads_lod_formula(TextureFilter filter);
 
 // In TextureFilter order; repeat wrap on both axes. A method whose filter reads a formula or bias
-// other than the default names it: "trilinear_max_axis_bias-0.5".
+// other than the default names it: "trilinear_max_axis_bias-0.5". Every method's precision is
+// float32 or fixed16, never automatic; fixed16 ends the name: "trilinear_fixed16".
 std::vector<FilterMethod> filter_methods(const MethodSettings& settings);
 
 }  // namespace edgewise::texture_quality

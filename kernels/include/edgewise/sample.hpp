@@ -116,6 +116,9 @@ struct SamplerOptions {
   FilterPrecision precision = FilterPrecision::automatic;
 };
 
+// Whether `filter` is made of bilinear taps, those FilterPrecision applies to.
+bool reads_bilinear_taps(TextureFilter filter);
+
 // The precision `automatic` stands for with `filter`: fixed16 where, on every view of the texture
 // study (docs/texture-filtering.md, "Fixed-point taps"), its error against ground truth stays
 // within 0.05 dB of float32's, float32 elsewhere.
