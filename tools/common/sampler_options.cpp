@@ -48,8 +48,17 @@ Option add_pyramid_option(CommandLine& line, PyramidFilter& pyramid,
   return add_enum_option(line, "--pyramid", pyramid, description);
 }
 
+Option add_precision_option(CommandLine& line, FilterPrecision& precision) {
+  return add_enum_option(
+      line, "--precision", precision,
+      "the bilinear taps' arithmetic on linear 8-bit textures: float32, or\n"
+      "fixed16 (16-bit integer weights, as GPUs filter); default automatic, the\n"
+      "one measured best for the filter");
+}
+
 void add_sampler_options(CommandLine& line, SamplerOptions& sampler) {
   add_wrap_option(line, sampler);
+  add_precision_option(line, sampler.precision);
   add_lod_option(line, sampler.lod);
   add_lod_bias_option(line, sampler.lod_bias, "added to log2 of the footprint (default 0)");
   add_max_aniso_option(line, sampler.max_anisotropy);

@@ -26,8 +26,9 @@ Option add_taps_option(CommandLine& line, int& taps);
 // --pyramid box|lanczos3, how coarser levels are made.
 Option add_pyramid_option(CommandLine& line, PyramidFilter& pyramid,
                           const std::string& description);
-
-// --wrap, --lod, --lod-bias, --max-aniso and --taps into `sampler`.
+// --precision automatic|float32|fixed16.
+Option add_precision_option(CommandLine& line, FilterPrecision& precision);
+// --wrap, --precision, --lod, --lod-bias, --max-aniso and --taps into `sampler`.
 void add_sampler_options(CommandLine& line, SamplerOptions& sampler);
 
 }  // namespace edgewise::tools

@@ -202,8 +202,8 @@ void add_texture_options(tools::CommandLine& command_line, RenderCommandLine& li
                          "the sampler's screen derivatives of (s, t): differences in\n"
                          "2x2 pixel quads, as GPUs take them (default), or exact, from the\n"
                          "plane equations");
-  for (const char* name : {"--wrap", "--lod", "--lod-bias", "--max-aniso", "--taps", "--pyramid",
-                           "--srgb", "--max-texture-mb", "--derivatives"}) {
+  for (const char* name : {"--wrap", "--precision", "--lod", "--lod-bias", "--max-aniso", "--taps",
+                           "--pyramid", "--srgb", "--max-texture-mb", "--derivatives"}) {
     command_line.option(name).group(kTextureGroup);
   }
 }
