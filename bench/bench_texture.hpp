@@ -33,6 +33,13 @@ const texture_scene::ViewMesh& ground_plane_mesh();
 // and depth 1.
 DrawOptions ground_plane_options(Isa isa, TextureFilter filter, TextureDerivatives derivatives);
 inline constexpr Vec4 kGroundPlaneClearColor{0.0f, 0.0f, 0.0f, 0.0f};
+
+// For a filter made of bilinear taps, the precision its default does not use on the
+// checkerboard (float32 or fixed16), which the benchmarks run beside the default.
+inline FilterPrecision other_precision(TextureFilter filter) {
+  return default_precision(filter) == FilterPrecision::fixed16 ? FilterPrecision::float32
+                                                               : FilterPrecision::fixed16;
+}
 inline constexpr float kGroundPlaneClearDepth = 1.0f;
 
 // Error beside speed: when edgewise-texture-quality has stored the ground truth of the

@@ -162,12 +162,10 @@ void register_sample_benchmarks() {
                                      FilterPrecision::automatic)
             ->Unit(benchmark::kMillisecond);
         // The other precision of the taps beside the default, named by a suffix.
-        if (isa == Isa::reference ||
-            effective_precision(checkerboard_texture(), {filter}) == FilterPrecision::float32) {
-          continue;
-        }
-        benchmark::RegisterBenchmark((name + "/float32").c_str(), sample_stream, isa, filter,
-                                     stream, FilterPrecision::float32)
+        if (isa == Isa::reference || !reads_bilinear_taps(filter)) continue;
+        const FilterPrecision other = other_precision(filter);
+        benchmark::RegisterBenchmark((name + "/" + std::string(name_of(other))).c_str(),
+                                     sample_stream, isa, filter, stream, other)
             ->Unit(benchmark::kMillisecond);
       }
     }

@@ -97,9 +97,11 @@ void register_textured_draw_benchmarks() {
             ->Unit(benchmark::kMillisecond);
         if (isa == Isa::reference || !common || derivatives != TextureDerivatives::quad) continue;
         // The other precision of the taps beside the default, named by a suffix.
-        if (effective_precision(checkerboard_texture(), {filter}) != FilterPrecision::float32) {
-          benchmark::RegisterBenchmark((name + "/float32").c_str(), textured_draw, isa, filter,
-                                       derivatives, std::size_t{1}, FilterPrecision::float32)
+        if (reads_bilinear_taps(filter)) {
+          const FilterPrecision other = other_precision(filter);
+          benchmark::RegisterBenchmark((name + "/" + std::string(name_of(other))).c_str(),
+                                       textured_draw, isa, filter, derivatives, std::size_t{1},
+                                       other)
               ->Unit(benchmark::kMillisecond);
         }
         const std::string all = "TexturedDraw/" + std::string(name_of(isa)) + "/threads:all/" +

@@ -147,10 +147,12 @@ TEST_P(TexturedRender, EveryFilterWithinTheSamplerBound) {
         Case c{static_cast<TextureFilter>(f), d, perspective, Shading::flat,
                InterpolationMethod::plane_equations};
         ASSERT_NO_FATAL_FAILURE(check_case(isa(), c, scene, texture, totals));
-        // The linear texture's taps default to fixed point: float32 too, on one combination.
+        // The other precision of the linear texture's taps, on one combination.
         if (reads_bilinear_taps(c.filter) && d == TextureDerivatives::quad &&
             perspective == Perspective::correct) {
-          c.precision = FilterPrecision::float32;
+          c.precision = default_precision(c.filter) == FilterPrecision::fixed16
+                            ? FilterPrecision::float32
+                            : FilterPrecision::fixed16;
           ASSERT_NO_FATAL_FAILURE(check_case(isa(), c, scene, texture, totals));
         }
       }
