@@ -14,7 +14,8 @@ the scalar reference, and the comparison with published peer figures and with th
 - Sample/*, SamplePeer/*: texture samples/s per filter, ISA and query stream, beside
   OpenImageIO's TextureSystem, against the sampling targets (AVX2, one core, ground plane);
 - TexturedDraw/*: textured pixels/s of draw() on the same ground-plane view per filter, ISA and
-  derivative method, beside sample()'s rate on the view's queries;
+  derivative method, beside sample()'s rate on the view's queries; their /<precision> variants,
+  the bilinear taps in the precision the default does not use, beside the default;
 - DrawPeer/*: Mesa's llvmpipe on the Shading/ workloads and the trilinear and anisotropic
   (max_anisotropy 16) TexturedDraw/ ones, one thread and its default threads, beside edgewise
   (the widest ISA measured): edgewise / llvmpipe;
@@ -74,6 +75,11 @@ DRAW_NAME = re.compile(
     r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<derivatives>[a-z]+)$")
 TEXTURED_ALL_NAME = re.compile(r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/threads:all/(?P<filter>[a-z_]+)/"
                                r"quad/real_time$")
+# The other precision of a filter's bilinear taps, run beside the default (bench/bench_texture.hpp).
+SAMPLE_PRECISION_NAME = re.compile(r"^Sample/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/"
+                                   r"(?P<stream>[a-z_]+)/(?P<precision>float32|fixed16)$")
+DRAW_PRECISION_NAME = re.compile(r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/"
+                                 r"(?P<derivatives>[a-z]+)/(?P<precision>float32|fixed16)$")
 PEER_NAME = re.compile(r"^SamplePeer/oiio/(?P<mode>[a-z0-9_]+)/(?P<stream>[a-z_]+)$")
 DRAW_PEER_NAME = re.compile(r"^DrawPeer/(?P<peer>[a-z0-9_]+)/threads:(?P<threads>[a-z0-9]+)/"
                             r"(?P<workload>.+?)(/manual_time)?$")
@@ -363,6 +369,30 @@ def psnr_cell(entry):
     if not entry or "error" in entry or "psnr_db" not in entry:
         return "-"
     return f"{entry['psnr_db']:.1f} dB"
+
+
+def print_precisions(sample_variants, samples, draw_variants, draws):
+    """Each filter's other precision beside its default, sampled and drawn: rates and PSNR."""
+    print("the bilinear taps in the other precision (FilterPrecision) beside the default: "
+          "samples/s (Sample/) or pixels/s (TexturedDraw/, quad derivatives), one core")
+    header = ["benchmark", "filter", "stream", "ISA", "default", "other", "precision",
+              "other / default", "PSNR default", "PSNR other"]
+    rows = []
+    for kind, variants, plain in (("Sample", sample_variants, samples),
+                                  ("TexturedDraw", draw_variants, draws)):
+        for key in sorted(variants, key=lambda k: (k[0], k[1], ISA_ORDER.index(k[2])
+                                                   if k[2] in ISA_ORDER else 99)):
+            name, where, isa, precision = key
+            other = variants[key]
+            default = plain.get((name, where, isa)) if kind == "Sample" else \
+                plain.get((name, isa, where))
+            if default is None or "error" in default or "error" in other:
+                continue
+            a, b = default["items_per_second"], other["items_per_second"]
+            rows.append([kind, name, where, isa, si(a, "/s"), si(b, "/s"), precision,
+                         f"{b / a:.2f}x", psnr_cell(default), psnr_cell(other)])
+    print_table(header, rows)
+    print()
 
 
 def print_sampling(samples, peers):
@@ -701,6 +731,10 @@ def main(argv):
                       lambda m: (int(m["area"]), m["method"], m["perspective"], m["isa"]))
     samples = collect(results, SAMPLE_NAME, lambda m: (m["filter"], m["stream"], m["isa"]))
     peers = collect(results, PEER_NAME, lambda m: (m["mode"], m["stream"]))
+    sample_variants = collect(results, SAMPLE_PRECISION_NAME,
+                              lambda m: (m["filter"], m["stream"], m["isa"], m["precision"]))
+    draw_variants = collect(results, DRAW_PRECISION_NAME,
+                            lambda m: (m["filter"], m["derivatives"], m["isa"], m["precision"]))
     draws = collect(results, DRAW_NAME, lambda m: (m["filter"], m["isa"], m["derivatives"]))
     textured_all = collect(results, TEXTURED_ALL_NAME, lambda m: (m["filter"], m["isa"]))
     draw_peers = collect(results, DRAW_PEER_NAME,
@@ -727,6 +761,8 @@ def main(argv):
                                        (print_methods, methods, (methods,)),
                                        (print_sampling, samples, (samples, peers)),
                                        (print_textured_draw, draws, (draws, samples)),
+                                       (print_precisions, sample_variants or draw_variants,
+                                        (sample_variants, samples, draw_variants, draws)),
                                        (print_textured_threads, textured_all,
                                         (textured_all, draws)),
                                        (print_draw_peers, draw_peers,

@@ -175,92 +175,36 @@ inline Rgba<Arch> summed_area_lanes(const SummedAreaBox<Arch>& box, const QueryL
   return out;
 }
 
-// Every query through the filter `options` names, its bilinear taps summed by Sums; with
-// kTapsOnly, only the filters made of bilinear taps are compiled.
-template <class Sums, bool kTapsOnly, class Queries, class Results>
-void sample_filtered(const detail::TextureDescription& texture, const SamplerOptions& options,
-                     const Queries& queries, std::size_t count, const Results& out) {
+// Every query through `options`' filter, one made of bilinear taps, which `Sums` weighs and sums.
+template <class Sums, class Queries, class Results>
+void sample_taps(const detail::TextureDescription& texture, const SamplerOptions& options,
+                 const Queries& queries, std::size_t count, const Results& out) {
   const TextureFilters<Arch, Sums> f(texture, options);
   using Q = QueryLanes<Arch>;
-  if constexpr (kTapsOnly) {
-    switch (options.filter) {
-      case TextureFilter::bilinear:
-        return sample_all<false>(texture, queries, count, out,
-                                 [&](const Q& q)
-                                     EDGEWISE_INLINE_LAMBDA { return f.bilinear0(q.s, q.t); });
-      case TextureFilter::mip_nearest:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q) EDGEWISE_INLINE_LAMBDA {
-                                  return f.mip_nearest(q.s, q.t, f.level_of_detail(q));
-                                });
-      case TextureFilter::trilinear:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q) EDGEWISE_INLINE_LAMBDA {
-                                  return f.trilinear(q.s, q.t, f.level_of_detail(q));
-                                });
-      case TextureFilter::supersample:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q)
-                                    EDGEWISE_INLINE_LAMBDA { return f.supersample(q); });
-      case TextureFilter::ripmap:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.ripmap(q); });
-      case TextureFilter::anisotropic:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q)
-                                    EDGEWISE_INLINE_LAMBDA { return f.anisotropic(q); });
-      default:
-        return;  // not reached: reads_bilinear_taps() chose kTapsOnly
-    }
-  } else {
-    switch (options.filter) {
-      case TextureFilter::nearest:
-        return sample_all<false>(texture, queries, count, out,
-                                 [&](const Q& q)
-                                     EDGEWISE_INLINE_LAMBDA { return f.nearest(q.s, q.t); });
-      case TextureFilter::bilinear:
-        return sample_all<false>(texture, queries, count, out,
-                                 [&](const Q& q)
-                                     EDGEWISE_INLINE_LAMBDA { return f.bilinear0(q.s, q.t); });
-      case TextureFilter::bicubic_catmull_rom:
-        return sample_all<false>(texture, queries, count, out,
-                                 [&](const Q& q)
-                                     EDGEWISE_INLINE_LAMBDA { return f.bicubic(q.s, q.t, true); });
-      case TextureFilter::bicubic_bspline:
-        return sample_all<false>(texture, queries, count, out,
-                                 [&](const Q& q)
-                                     EDGEWISE_INLINE_LAMBDA { return f.bicubic(q.s, q.t, false); });
-      case TextureFilter::mip_nearest:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q) EDGEWISE_INLINE_LAMBDA {
-                                  return f.mip_nearest(q.s, q.t, f.level_of_detail(q));
-                                });
-      case TextureFilter::trilinear:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q) EDGEWISE_INLINE_LAMBDA {
-                                  return f.trilinear(q.s, q.t, f.level_of_detail(q));
-                                });
-      case TextureFilter::supersample:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q)
-                                    EDGEWISE_INLINE_LAMBDA { return f.supersample(q); });
-      case TextureFilter::ripmap:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.ripmap(q); });
-      case TextureFilter::anisotropic:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q)
-                                    EDGEWISE_INLINE_LAMBDA { return f.anisotropic(q); });
-      case TextureFilter::ewa:
-        return sample_all<true>(texture, queries, count, out,
-                                [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.ewa(q); });
-      case TextureFilter::summed_area: {
-        const SummedAreaBox<Arch> box(texture, options);
-        return sample_all<true, false>(
-            texture, queries, count, out,
-            [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return summed_area_lanes(box, q); });
-      }
-    }
+  switch (options.filter) {
+    case TextureFilter::bilinear:
+      return sample_all<false>(texture, queries, count, out,
+                               [&](const Q& q)
+                                   EDGEWISE_INLINE_LAMBDA { return f.bilinear0(q.s, q.t); });
+    case TextureFilter::mip_nearest:
+      return sample_all<true>(texture, queries, count, out, [&](const Q& q) EDGEWISE_INLINE_LAMBDA {
+        return f.mip_nearest(q.s, q.t, f.level_of_detail(q));
+      });
+    case TextureFilter::trilinear:
+      return sample_all<true>(texture, queries, count, out, [&](const Q& q) EDGEWISE_INLINE_LAMBDA {
+        return f.trilinear(q.s, q.t, f.level_of_detail(q));
+      });
+    case TextureFilter::supersample:
+      return sample_all<true>(texture, queries, count, out,
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.supersample(q); });
+    case TextureFilter::ripmap:
+      return sample_all<true>(texture, queries, count, out,
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.ripmap(q); });
+    case TextureFilter::anisotropic:
+      return sample_all<true>(texture, queries, count, out,
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.anisotropic(q); });
+    default:
+      return;  // not reached: the callers check reads_bilinear_taps()
   }
 }
 
@@ -268,10 +212,39 @@ void sample_filtered(const detail::TextureDescription& texture, const SamplerOpt
 template <class Queries, class Results>
 void sample_with(const detail::TextureDescription& texture, const SamplerOptions& options,
                  const Queries& queries, std::size_t count, const Results& out) {
-  if (detail::fixed_point_taps(texture, options)) {
-    return sample_filtered<FixedTapSums<Arch>, true>(texture, options, queries, count, out);
+  if (reads_bilinear_taps(options.filter)) {
+    if (detail::fixed_point_taps(texture, options)) {
+      return sample_taps<FixedTapSums<Arch>>(texture, options, queries, count, out);
+    }
+    return sample_taps<FloatTapSums<Arch>>(texture, options, queries, count, out);
   }
-  sample_filtered<FloatTapSums<Arch>, false>(texture, options, queries, count, out);
+  const TextureFilters<Arch> f(texture, options);
+  using Q = QueryLanes<Arch>;
+  switch (options.filter) {
+    case TextureFilter::nearest:
+      return sample_all<false>(texture, queries, count, out,
+                               [&](const Q& q)
+                                   EDGEWISE_INLINE_LAMBDA { return f.nearest(q.s, q.t); });
+    case TextureFilter::bicubic_catmull_rom:
+      return sample_all<false>(texture, queries, count, out,
+                               [&](const Q& q)
+                                   EDGEWISE_INLINE_LAMBDA { return f.bicubic(q.s, q.t, true); });
+    case TextureFilter::bicubic_bspline:
+      return sample_all<false>(texture, queries, count, out,
+                               [&](const Q& q)
+                                   EDGEWISE_INLINE_LAMBDA { return f.bicubic(q.s, q.t, false); });
+    case TextureFilter::ewa:
+      return sample_all<true>(texture, queries, count, out,
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.ewa(q); });
+    case TextureFilter::summed_area: {
+      const SummedAreaBox<Arch> box(texture, options);
+      return sample_all<true, false>(
+          texture, queries, count, out,
+          [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return summed_area_lanes(box, q); });
+    }
+    default:
+      return;  // the filters made of taps, above
+  }
 }
 
 }  // namespace sample_detail

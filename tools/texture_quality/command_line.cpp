@@ -130,7 +130,6 @@ void add_method_options(tools::CommandLine& command_line, QualitySettings& setti
       .add_values(
           "--precision",
           [&methods](const std::vector<std::string>& names) {
-            methods.precisions.clear();
             for (const std::string& name : names) {
               const FilterPrecision precision = *parse_name<FilterPrecision>(name);
               if (std::find(methods.precisions.begin(), methods.precisions.end(), precision) !=

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <span>
 #include <string_view>
 
 namespace edgewise::texture_quality {
@@ -55,7 +56,10 @@ void push_precisions(FilterMethod method, const MethodSettings& settings,
     methods.push_back(method);
     return;
   }
-  for (FilterPrecision precision : settings.precisions) {
+  static constexpr FilterPrecision kBoth[] = {FilterPrecision::float32, FilterPrecision::fixed16};
+  const std::span<const FilterPrecision> precisions =
+      settings.precisions.empty() ? std::span<const FilterPrecision>(kBoth) : settings.precisions;
+  for (FilterPrecision precision : precisions) {
     FilterMethod variant = method;
     variant.options.precision = precision;
     if (precision == FilterPrecision::fixed16) variant.name += "_fixed16";

@@ -25,8 +25,9 @@ struct MethodSettings {
   LodFormula lod = LodFormula::exact;
   float lod_bias = 0.0f;               // finite
   std::vector<TextureFilter> filters;  // empty: every filter
-  // Of the filters made of bilinear taps (reads_bilinear_taps()); float32 or fixed16, in order.
-  std::vector<FilterPrecision> precisions = {FilterPrecision::float32, FilterPrecision::fixed16};
+  // Of the filters made of bilinear taps (reads_bilinear_taps()): float32 or fixed16, in order;
+  // empty: float32, then fixed16.
+  std::vector<FilterPrecision> precisions;
 };
 
 // Whether a filter's result depends on SamplerOptions::lod_bias, and on SamplerOptions::lod.
