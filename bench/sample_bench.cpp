@@ -7,8 +7,10 @@
 // Peer: OpenImageIO's TextureSystem on the same queries and the same texture (a tiled, mipmapped
 // file written at start-up), single point lookups through a texture handle.
 //
-// Sample/<isa>/<filter>/<stream> and SamplePeer/oiio/<mode>/<stream>. One iteration samples the
-// whole stream (the reference: its first 1/64); items are queries. Error beside speed: the
+// Sample/<isa>/<filter>/<stream> and SamplePeer/oiio/<mode>/<stream>; for the filters made of
+// bilinear taps, Sample/<isa>/<filter>/<stream>/<precision> too: the FilterPrecision the default
+// does not use (other_precision()). One iteration samples the whole stream (the reference: its
+// first 1/64); items are queries. Error beside speed: the
 // counters rmse and psnr_db against ground truth, when edgewise-texture-quality has stored it
 // (bench_texture.hpp).
 #include <benchmark/benchmark.h>

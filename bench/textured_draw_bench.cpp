@@ -6,9 +6,11 @@
 // side by side show what drawing adds to sampling: coverage, depth, the texture coordinates and
 // derivatives, the colour write.
 //
-// TexturedDraw/<isa>/<filter>/<derivatives>. One iteration is one draw() call (white flat
-// shading, depth test less; the framebuffer cleared with the timer paused); items are pixels;
-// rmse and psnr_db against ground truth when it is stored (bench_texture.hpp).
+// TexturedDraw/<isa>/<filter>/<derivatives>, and /<precision> after it for the common filters
+// made of bilinear taps: the FilterPrecision the default does not use. One iteration is one
+// draw() call (white flat shading, depth test less; the framebuffer cleared with the timer
+// paused); items are pixels; rmse and psnr_db against ground truth when it is stored
+// (bench_texture.hpp).
 // AVX2 (or NEON) runs every filter with both methods; the other ISAs bilinear, trilinear and
 // anisotropic with quad derivatives; the reference bilinear and trilinear on a quarter of the
 // screen (its scissor), as it takes about a second per full frame.
