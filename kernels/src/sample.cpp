@@ -41,10 +41,9 @@ bool reads_bilinear_taps(TextureFilter filter) {
   }
 }
 
-// Measured with edgewise-texture-quality at 960x540 (docs/texture-filtering.md, "Fixed-point
-// taps"): fixed16 matches float32 within 0.01 dB on the ground planes, but on the magnification
-// views, where float32 comes within 1e-6 of ground truth, its weights' rounding costs 0.1 dB
-// (checkerboard) to 1 dB (sinusoids) on every tap filter, beyond the 0.05 dB allowed.
+// fixed16 matches float32 on minified views, but its weights' rounding shows in the magnification
+// views, where float32 comes closest to ground truth: beyond the 0.05 dB allowed, for every tap
+// filter (docs/texture-filtering.md, "Fixed-point taps").
 FilterPrecision default_precision(TextureFilter) {
   return FilterPrecision::float32;
 }

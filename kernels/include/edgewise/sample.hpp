@@ -93,12 +93,13 @@ enum class LodFormula : std::uint8_t { exact, max_axis };
 // The arithmetic of the bilinear taps on linear 8-bit textures (the taps of bilinear,
 // mip_nearest, trilinear, supersample, ripmap and anisotropic):
 //   float32  texels decoded to float, weights and sums in float (a few ulps from exact)
-//   fixed16  texels as 16-bit integers, each tap's weights rounded to multiples of 2^-15 and the
-//            products summed exactly in 32-bit integers, as GPUs filter: a result is off by at
-//            most 2^-15 times the texels' largest value per tap, about 1/128 of an 8-bit step
-//            for trilinear's 8 taps
+//   fixed16  texels widened to 16-bit integers, each weight rounded to a multiple of 2^-15 and
+//            the products summed exactly in 32-bit integers, as GPUs filter: a result is off by
+//            at most 2^-15 times the texels' largest value per weight (8 for trilinear, 8 per
+//            anisotropic probe before the probes' mean), about 1/128 of an 8-bit step
 //   automatic  the precision measured best for the filter (default_precision())
-// sRGB and float textures, and the other filters, are filtered in float32 whatever is asked.
+// sRGB and float textures, and the other filters, are filtered in float32 whatever is asked;
+// Isa::reference computes the exact result whatever the precision.
 enum class FilterPrecision : std::uint8_t { automatic, float32, fixed16 };
 
 // The ranges of SamplerOptions' integer options.
