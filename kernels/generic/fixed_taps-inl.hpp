@@ -82,8 +82,10 @@ class FixedTapSums {
         packed);
   }
 
-  // The sums in the texture's stored units (8-bit codes), one batch per channel. Exact: every sum
-  // is an integer below 2^24 (255 codes times weights adding up to about 2^15).
+  // The sums in the texture's stored units (8-bit codes), one batch per channel. A bilinear or
+  // trilinear sum is an integer below 2^24 (255 codes times weights adding up to about 2^15), so
+  // exact in float; the anisotropic probes' sum (up to kMaxAnisotropyLimit of them, below 2^31)
+  // rounds once here, by 2^-24 relative, within the bound's rounding of the probes' mean.
   [[gnu::always_inline]] Rgba<Arch> total() const {
     Floats f[4];
     for (int j = 0; j < 4; ++j)
