@@ -24,9 +24,10 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
   visitor.add_counts(counts);
 }
 
-std::size_t drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
-                                  std::uint32_t* indices, std::size_t triangles, CullMode cull) {
-  return drop_culled_triangle_list<Arch>(vertices, vertex_count, indices, triangles, cull);
+detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
+                                               std::uint32_t* indices, std::size_t triangles,
+                                               CullMode cull, const detail::SampleWindow& window) {
+  return drop_culled_triangle_list<Arch>(vertices, vertex_count, indices, triangles, cull, window);
 }
 
 void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {

@@ -167,25 +167,55 @@ void for_each_drawn_triangle(
   }
 }
 
-std::size_t drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
-                                  std::uint32_t* indices, std::size_t triangles, CullMode cull) {
-  std::size_t kept = 0;
+namespace {
+
+// The smallest integer at least a / 256.
+std::int64_t ceil_fixed_to_pixels(std::int64_t a) {
+  const std::int64_t q = a / 256;
+  return q * 256 < a ? q + 1 : q;
+}
+
+// Whether some sample of `window` lies between the snapped triangle's smallest and largest
+// coordinates on both axes: a pixel of the clip rectangle whose samples, from its centre
+// 256 i + 128 less the reach to the centre plus the reach, meet [lo, hi]. The first pixel whose
+// last sample reaches lo is the only one to try: later pixels' first samples lie further on.
+bool box_holds_sample(const SnappedTriangle& t, const detail::SampleWindow& window) {
+  const auto axis_meets = [&](const std::int64_t(&v)[3], std::int32_t first, std::int32_t end) {
+    const std::int64_t lo = std::min({v[0], v[1], v[2]}), hi = std::max({v[0], v[1], v[2]});
+    const std::int64_t i =
+        std::max<std::int64_t>(ceil_fixed_to_pixels(lo - 128 - window.reach), first);
+    return i < end && 256 * i + 128 - window.reach <= hi;
+  };
+  return axis_meets(t.x, window.clip.x0, window.clip.x1) &&
+         axis_meets(t.y, window.clip.y0, window.clip.y1);
+}
+
+}  // namespace
+
+detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
+                                               std::uint32_t* indices, std::size_t triangles,
+                                               CullMode cull, const detail::SampleWindow& window) {
+  detail::DroppedTriangles result;
   for (std::size_t t = 0; t < triangles; ++t) {
     const std::uint32_t corner[3] = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
-    bool culled = false;
     if (corner[0] < vertex_count && corner[1] < vertex_count && corner[2] < vertex_count) {
       SnappedTriangle snapped;
       const TriangleStatus status = snap_and_classify(vertices[corner[0]], vertices[corner[1]],
                                                       vertices[corner[2]], cull, snapped);
-      culled =
-          status == TriangleStatus::culled_zero_area || status == TriangleStatus::culled_winding;
+      if (status == TriangleStatus::culled_zero_area || status == TriangleStatus::culled_winding) {
+        ++result.culled;
+        continue;
+      }
+      if (status == TriangleStatus::drawn && !box_holds_sample(snapped, window)) {
+        ++result.unseen;
+        continue;
+      }
     }
-    if (culled) continue;
     for (int i = 0; i < 3; ++i)
-      indices[3 * kept + i] = corner[i];
-    ++kept;
+      indices[3 * result.kept + i] = corner[i];
+    ++result.kept;
   }
-  return kept;
+  return result;
 }
 
 }  // namespace edgewise::reference

@@ -14,6 +14,8 @@
 #include "edgewise/multisample.hpp"
 
 namespace edgewise::detail {
+struct DroppedTriangles;
+struct SampleWindow;
 struct TriangleBatch;
 struct ShadeBatch;
 struct ShadeCounts;
@@ -58,9 +60,11 @@ void for_each_drawn_triangle(
     const std::function<void(std::size_t, const SnappedTriangle&)>& triangle);
 
 // Drops from `indices` each triangle whose indices are in range and that snap_and_classify()
-// culls, one at a time; the rest keep their order. Returns how many are kept.
-std::size_t drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
-                                  std::uint32_t* indices, std::size_t triangles, CullMode cull);
+// culls, or draws with no sample of `window` between its vertices' bounds, one at a time; the
+// rest keep their order.
+detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
+                                               std::uint32_t* indices, std::size_t triangles,
+                                               CullMode cull, const detail::SampleWindow& window);
 
 // The shading reference (draw_reference.cpp): depth test, double-precision interpolation and
 // shading of every covered sample.

@@ -47,7 +47,7 @@ std::uint64_t count_screen_triangles(DrawReport& report, std::span<const RasterR
   RasterReport raster;
   for (const RasterReport& range : ranges)
     add_range_report(raster, range);
-  report.rasterized = raster.triangles - raster.culled - raster.errors;
+  report.rasterized += raster.triangles - raster.culled - raster.errors;
   report.culled += raster.culled;
   report.errors += raster.errors;
   return raster.triangles;
@@ -68,6 +68,7 @@ void add_vertex_counts(DrawReport& report, std::span<const DrawReport> ranges) {
     report.outside += part.outside;
     report.culled += part.culled;
     report.errors += part.errors;
+    report.rasterized += part.rasterized;
   }
 }
 
@@ -450,7 +451,8 @@ void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh&
   std::vector<RasterReport> range_reports(ranges);
   const auto bin_part = [&](const ScreenMesh& all, std::size_t range) {
     ScreenMesh& part = parts[range];
-    drop_culled_triangles(*call.kernels, all, part, options.cull, vertex_reports[range]);
+    drop_culled_triangles(*call.kernels, all, part, options.cull,
+                          sample_window(call.clip, call.samples), vertex_reports[range]);
     const TriangleBatch batch = screen_triangles(target, all, part.indices.data(),
                                                  part.indices.size() / 3, call.clip, options.cull);
     bin_screen_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),

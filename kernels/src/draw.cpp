@@ -137,7 +137,7 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
   ShadeCounts counts;
   call.kernels->shade(batch, raster, counts);
   DrawReport& report = call.report;
-  report.rasterized = raster.drawn;
+  report.rasterized += raster.drawn;
   report.culled += raster.culled;
   report.errors += raster.errors;
   report.fragments = counts.fragments;

@@ -24,8 +24,9 @@ void map_vertices(const detail::VertexStageCall& call, std::size_t first, std::s
 void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t* codes,
                         std::size_t first, std::size_t last, detail::ScreenMesh& out,
                         DrawReport& report);
-std::size_t drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
-                                  std::uint32_t* indices, std::size_t triangles, CullMode cull);
+detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
+                                               std::uint32_t* indices, std::size_t triangles,
+                                               CullMode cull, const detail::SampleWindow& window);
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
 
 // resolve.cpp

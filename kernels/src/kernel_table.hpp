@@ -21,6 +21,20 @@ struct DrawReport;
 
 namespace edgewise::detail {
 
+// Where a draw's samples can be: the pixels of `clip`, each with samples up to `reach`
+// fixed-point units (1/256 px) from its centre on either axis (0 for one sample per pixel).
+struct SampleWindow {
+  PixelRect clip;
+  std::int32_t reach = 0;
+};
+
+// What drop_culled_triangles() removed: the triangles set-up culls, and those it would draw
+// but whose box (the snapped vertices' bounds) holds no sample of the window, so that they
+// cannot cover one: `unseen`, drawn as far as the report goes. `kept` triangles remain.
+struct DroppedTriangles {
+  std::size_t kept = 0, culled = 0, unseen = 0;
+};
+
 // A validated call: the target is already reduced to one clip rectangle.
 struct TriangleBatch {
   const Vec2* vertices;
@@ -58,13 +72,13 @@ struct KernelTable {
   void (*assemble_triangles)(const VertexStageCall& call, const std::int32_t* codes,
                              std::size_t first, std::size_t last, ScreenMesh& out,
                              DrawReport& report);
-  // Drops from `indices` (three per triangle into `vertices`) the triangles set-up would cull:
-  // zero area after snapping, or facing away under `cull`; the rest keep their order. A triangle
-  // with a bad index or a vertex outside the guard band stays, for set-up to report. Returns how
-  // many triangles are kept.
-  std::size_t (*drop_culled_triangles)(const Vec2* vertices, std::size_t vertex_count,
-                                       std::uint32_t* indices, std::size_t triangles,
-                                       CullMode cull);
+  // Drops from `indices` (three per triangle into `vertices`) the triangles set-up would cull
+  // (zero area after snapping, or facing away under `cull`) and those it would draw with no
+  // sample of `window` in their box; the rest keep their order. A triangle with a bad index or a
+  // vertex outside the guard band stays, for set-up to report.
+  DroppedTriangles (*drop_culled_triangles)(const Vec2* vertices, std::size_t vertex_count,
+                                            std::uint32_t* indices, std::size_t triangles,
+                                            CullMode cull, const SampleWindow& window);
   void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
   // Resolving (resolve.hpp): the box filter at factor 1, output rows [8 first, 8 last); tent and
   // Mitchell, output rows [first, last).

@@ -168,13 +168,18 @@ void add_triangle(const VertexStageCall& call, const std::uint32_t (&corner)[3],
 }
 
 void drop_culled_triangles(const KernelTable& kernels, const ScreenMesh& positions,
-                           ScreenMesh& screen, CullMode cull, DrawReport& report) {
-  const std::size_t triangles = screen.indices.size() / 3;
-  const std::size_t kept =
+                           ScreenMesh& screen, CullMode cull, const SampleWindow& window,
+                           DrawReport& report) {
+  const DroppedTriangles dropped =
       kernels.drop_culled_triangles(positions.positions.data(), positions.positions.size(),
-                                    screen.indices.data(), triangles, cull);
-  screen.indices.truncate(3 * kept);
-  report.culled += triangles - kept;
+                                    screen.indices.data(), screen.indices.size() / 3, cull, window);
+  screen.indices.truncate(3 * dropped.kept);
+  report.culled += dropped.culled;
+  report.rasterized += dropped.unseen;
+}
+
+SampleWindow sample_window(const PixelRect& clip, int samples) {
+  return {clip, samples > 1 ? 128 : 0};
 }
 
 ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
@@ -182,7 +187,8 @@ ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMe
   ScreenMesh screen;
   run_vertex_stage(*call.kernels, vertex_stage_call(target, mesh, options, call.report.triangles),
                    screen, call.report);
-  drop_culled_triangles(*call.kernels, screen, screen, options.cull, call.report);
+  drop_culled_triangles(*call.kernels, screen, screen, options.cull,
+                        sample_window(call.clip, call.samples), call.report);
   return screen;
 }
 

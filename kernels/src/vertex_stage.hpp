@@ -52,12 +52,18 @@ void map_vertex_range(const KernelTable& kernels, const VertexStageCall& call, s
 void run_vertex_stage(const KernelTable& kernels, const VertexStageCall& call, ScreenMesh& out,
                       DrawReport& report);
 
-// The triangles of `screen` that set-up would cull (zero area, or facing away under `cull`)
-// dropped from its indices by the kernels' drop_culled_triangles, counted into report.culled:
-// primitive assembly's culling, before binning and set-up. `positions` are those the indices
-// name (a range's screen mesh may index the whole mesh's).
+// The triangles of `screen` that set-up would cull (zero area, or facing away under `cull`),
+// or draw with no sample of `window` in their box, dropped from its indices by the kernels'
+// drop_culled_triangles: primitive assembly's culling, before binning and set-up. The culled
+// are counted into report.culled, the others into report.rasterized (drawn, covering nothing).
+// `positions` are those the indices name (a range's screen mesh may index the whole mesh's).
 void drop_culled_triangles(const KernelTable& kernels, const ScreenMesh& positions,
-                           ScreenMesh& screen, CullMode cull, DrawReport& report);
+                           ScreenMesh& screen, CullMode cull, const SampleWindow& window,
+                           DrawReport& report);
+
+// The samples of a draw on `call`'s clip rectangle: up to half a pixel from the centre when
+// multisampled (a pattern's samples lie inside their pixel).
+SampleWindow sample_window(const PixelRect& clip, int samples);
 
 // What the classes of a triangle's vertices (classify_clip_vertex()) say about it, before
 // clip_triangle() is asked.

@@ -1,19 +1,25 @@
 // The culling of draw()'s screen triangles before set-up (KernelTable::drop_culled_triangles):
-// - every ISA keeps exactly the triangles the reference keeps, in the same order;
-// - those are exactly the triangles whose set-up status (the same ISA's coverage kernel, which
-//   fills a status per triangle) is neither culled_zero_area nor culled_winding: bad indices,
-//   non-finite and out-of-band vertices stay for set-up to report;
+// - every ISA keeps exactly the triangles the reference keeps, in the same order, and counts
+//   the dropped ones as it does;
+// - the culled ones are exactly those whose set-up status (the same ISA's coverage kernel, which
+//   fills a status per triangle) is culled_zero_area or culled_winding: bad indices, non-finite
+//   and out-of-band vertices stay for set-up to report;
+// - the unseen ones are drawn by set-up and cover no sample of the window's rectangle, one per
+//   pixel or in any standard multisample pattern (for a window that reaches half a pixel);
 // on random lists that mix snapped and unsnapped vertices, both windings, zero areas (repeated
-// and collinear corners), special and guard-band values and bad indices, of every length around
-// the lane counts, under each cull mode.
+// and collinear corners), special and guard-band values, bad indices and triangles smaller than
+// a pixel, of every length around the lane counts, under each cull mode and random windows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "edgewise/coverage.hpp"
+#include "edgewise/multisample.hpp"
 #include "isa_params.hpp"
 #include "random.hpp"
 #include "src/kernel_table.hpp"
@@ -24,7 +30,8 @@ namespace {
 constexpr CullMode kCullModes[] = {CullMode::none, CullMode::clockwise,
                                    CullMode::counter_clockwise};
 
-float coordinate(Random& random) {
+// A coordinate around `centre`, snapped ones within `spread` pixels of it.
+float coordinate(Random& random, double centre, double spread) {
   const double band = kGuardBand;
   switch (random.integer(0, 9)) {
     case 0:
@@ -34,9 +41,10 @@ float coordinate(Random& random) {
     case 2:  // at and around the guard band's edges
       return static_cast<float>(random.sign() * band + random.integer(-2, 2) / 512.0);
     case 3:  // unsnapped
-      return static_cast<float>(random.uniform(-100.0, 100.0));
+      return static_cast<float>(centre + random.uniform(-spread, spread));
     default:  // snapped to 1/256 px, as draw()'s vertex stage leaves it
-      return static_cast<float>(std::nearbyint(random.uniform(-64.0, 64.0) * 256.0) / 256.0);
+      return static_cast<float>(std::nearbyint((centre + random.uniform(-spread, spread)) * 256.0) /
+                                256.0);
   }
 }
 
@@ -45,11 +53,17 @@ struct TriangleList {
   std::vector<std::uint32_t> indices;
 };
 
+// Vertices within 64 px of (32, 32), or, for lists of triangles smaller than a pixel, within
+// one or two pixels of a point of [-4, 68).
 TriangleList random_list(Random& random, std::size_t triangles) {
   TriangleList list;
   const std::size_t vertex_count = static_cast<std::size_t>(random.integer(0, 24));
+  const bool tiny = random.chance(0.5);
+  const double spread = tiny ? random.uniform(0.3, 2.0) : 64.0;
+  const double cx = tiny ? random.uniform(-4.0, 68.0) : 32.0;
+  const double cy = tiny ? random.uniform(-4.0, 68.0) : 32.0;
   for (std::size_t v = 0; v < vertex_count; ++v)
-    list.vertices.push_back({coordinate(random), coordinate(random)});
+    list.vertices.push_back({coordinate(random, cx, spread), coordinate(random, cy, spread)});
   // Collinear corners: a vertex halfway between two others, exactly on the 1/256 grid.
   if (vertex_count >= 3) list.vertices[2] = {list.vertices[0].x, list.vertices[1].y};
   for (std::size_t t = 0; t < triangles; ++t) {
@@ -68,14 +82,29 @@ TriangleList random_list(Random& random, std::size_t triangles) {
   return list;
 }
 
-// The kept triangles' indices, and how many were kept.
-std::vector<std::uint32_t> kept_by(const detail::KernelTable& kernels, const TriangleList& list,
-                                   CullMode cull) {
-  std::vector<std::uint32_t> indices = list.indices;
-  const std::size_t kept = kernels.drop_culled_triangles(list.vertices.data(), list.vertices.size(),
-                                                         indices.data(), indices.size() / 3, cull);
-  indices.resize(3 * kept);
-  return indices;
+// A window of up to 64 x 64 pixels at a random place in [0, 64), sometimes empty, with samples
+// at the pixel centres or within half a pixel of them.
+detail::SampleWindow random_window(Random& random) {
+  const auto x0 = static_cast<std::int32_t>(random.integer(0, 63));
+  const auto y0 = static_cast<std::int32_t>(random.integer(0, 63));
+  const auto x1 = static_cast<std::int32_t>(random.integer(x0, 64));
+  const auto y1 = static_cast<std::int32_t>(random.integer(y0, 64));
+  return {PixelRect{x0, y0, x1, y1}, random.chance(0.5) ? 128 : 0};
+}
+
+struct Dropped {
+  std::vector<std::uint32_t> kept;  // the kept triangles' indices
+  detail::DroppedTriangles counts;
+};
+
+Dropped dropped_by(const detail::KernelTable& kernels, const TriangleList& list, CullMode cull,
+                   const detail::SampleWindow& window) {
+  Dropped dropped{list.indices, {}};
+  dropped.counts =
+      kernels.drop_culled_triangles(list.vertices.data(), list.vertices.size(), dropped.kept.data(),
+                                    list.indices.size() / 3, cull, window);
+  dropped.kept.resize(3 * dropped.counts.kept);
+  return dropped;
 }
 
 // The triangles set-up keeps: those whose status, by the kernels' coverage pass, is not culled.
@@ -101,29 +130,79 @@ std::vector<std::uint32_t> kept_by_set_up(const detail::KernelTable& kernels,
   return kept;
 }
 
+// The triangles in `all` but not in `kept` (a subsequence of it), three indices each.
+std::vector<std::uint32_t> left_out(const std::vector<std::uint32_t>& all,
+                                    const std::vector<std::uint32_t>& kept) {
+  std::vector<std::uint32_t> out;
+  std::size_t k = 0;
+  for (std::size_t t = 0; t < all.size(); t += 3) {
+    if (k < kept.size() && std::equal(all.begin() + t, all.begin() + t + 3, kept.begin() + k)) {
+      k += 3;
+    } else {
+      out.insert(out.end(), all.begin() + t, all.begin() + t + 3);
+    }
+  }
+  return out;
+}
+
+// The samples `triangles` cover in `window`: pixel centres, and when the window reaches half a
+// pixel, the samples of every standard multisample pattern too.
+std::uint64_t samples_covered(const TriangleList& list, const std::vector<std::uint32_t>& triangles,
+                              const detail::SampleWindow& window) {
+  std::uint64_t covered = 0;
+  for (int samples : {1, 2, 4, 8, 16}) {
+    if (samples > 1 && window.reach == 0) break;
+    RasterOptions options;
+    options.samples = samples;
+    options.threads = 1;
+    covered +=
+        count_coverage(list.vertices, triangles, RasterTarget{64, 64, window.clip}, options).pixels;
+  }
+  return covered;
+}
+
 class CulledTriangles : public IsaTest {};
 
 TEST_P(CulledTriangles, KeepsWhatSetUpKeepsAsTheReferenceDoes) {
   const detail::KernelTable& kernels = detail::kernel_table(isa());
   const detail::KernelTable& reference = detail::kernel_table(Isa::reference);
   Random random(0x5eed'c011);
-  std::size_t dropped = 0, kept = 0;
+  std::size_t culled = 0, unseen = 0, kept = 0;
   for (int round = 0; round < 600; ++round) {
     const std::size_t triangles = round < 40 ? static_cast<std::size_t>(round)
                                              : static_cast<std::size_t>(random.integer(0, 300));
     const TriangleList list = random_list(random, triangles);
     for (CullMode cull : kCullModes) {
-      const std::vector<std::uint32_t> ours = kept_by(kernels, list, cull);
-      ASSERT_EQ(ours, kept_by(reference, list, cull))
-          << "round " << round << ", cull " << static_cast<int>(cull);
-      ASSERT_EQ(ours, kept_by_set_up(kernels, list, cull))
-          << "round " << round << ", cull " << static_cast<int>(cull);
-      kept += ours.size() / 3;
-      dropped += triangles - ours.size() / 3;
+      const detail::SampleWindow window = random_window(random);
+      const std::string where =
+          "round " + std::to_string(round) + ", cull " + std::to_string(static_cast<int>(cull)) +
+          ", window " + std::to_string(window.clip.x0) + " " + std::to_string(window.clip.y0) +
+          " " + std::to_string(window.clip.x1) + " " + std::to_string(window.clip.y1) + ", reach " +
+          std::to_string(window.reach);
+      const Dropped ours = dropped_by(kernels, list, cull, window);
+      const Dropped theirs = dropped_by(reference, list, cull, window);
+      ASSERT_EQ(ours.kept, theirs.kept) << where;
+      ASSERT_EQ(ours.counts.culled, theirs.counts.culled) << where;
+      ASSERT_EQ(ours.counts.unseen, theirs.counts.unseen) << where;
+      ASSERT_EQ(ours.counts.kept + ours.counts.culled + ours.counts.unseen, triangles) << where;
+      // Without a sample in the window nothing is culled that set-up keeps: the window's
+      // drops are the others.
+      const std::vector<std::uint32_t> drawn = kept_by_set_up(kernels, list, cull);
+      ASSERT_EQ(drawn.size() / 3, triangles - ours.counts.culled) << where;
+      const std::vector<std::uint32_t> unseen_triangles = left_out(drawn, ours.kept);
+      ASSERT_EQ(unseen_triangles.size() / 3, ours.counts.unseen) << where;
+      ASSERT_EQ(left_out(list.indices, drawn).size() / 3, ours.counts.culled) << where;
+      if (!unseen_triangles.empty()) {
+        ASSERT_EQ(samples_covered(list, unseen_triangles, window), 0u) << where;
+      }
+      culled += ours.counts.culled;
+      unseen += ours.counts.unseen;
+      kept += ours.counts.kept;
     }
   }
-  // The lists hold both outcomes in number (a test that only ever kept would prove nothing).
-  EXPECT_GT(dropped, 10'000u);
+  // The lists hold every outcome in number (a test that only ever kept would prove nothing).
+  EXPECT_GT(culled, 10'000u);
+  EXPECT_GT(unseen, 10'000u);
   EXPECT_GT(kept, 10'000u);
 }
 

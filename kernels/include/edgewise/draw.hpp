@@ -136,8 +136,9 @@ struct DrawReport {
   std::uint64_t culled = 0;          // by winding, zero area after snapping, or degenerate in
                                      // clipping (ClipStatus::culled_degenerate, clip.hpp)
   std::uint64_t errors = 0;          // non-finite or out-of-range clip-space positions, bad indices
-  std::uint64_t rasterized = 0;      // screen triangles set up and walked (covering samples or not)
-  std::uint64_t fragments = 0;       // covered samples
+  // Screen triangles drawn: set up and walked, or found from their box alone to cover no sample.
+  std::uint64_t rasterized = 0;
+  std::uint64_t fragments = 0;         // covered samples
   std::uint64_t fragments_passed = 0;  // of those, passing the depth test (and so written)
   std::uint64_t tiles_skipped = 0;     // covered tiles rejected whole by hierarchical depth
   // Of fragments_passed, those written with one colour per triangle or per tile under
