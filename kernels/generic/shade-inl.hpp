@@ -134,6 +134,14 @@ class ShadingVisitor {
     }
   }
 
+  // Starts fetching what begin_group() will read of vertex v.
+  [[gnu::always_inline]] void prefetch_vertex(std::size_t v) const {
+    __builtin_prefetch(batch_.depth + v);
+    __builtin_prefetch(batch_.clip_w + v);
+    if (normal_planes_) __builtin_prefetch(batch_.normals + v);
+    if (colour_planes_) __builtin_prefetch(batch_.colors + v);
+  }
+
   // Triangle t, lane l of the last begin_group().
   void begin_triangle(std::uint32_t t, std::size_t l) {
     row_bases_tile_y_ = kNoTileRow;
