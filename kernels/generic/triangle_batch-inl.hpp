@@ -175,21 +175,13 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
   for (std::size_t first = 0; first < batch.triangle_count; first += kLanes) {
     const std::size_t count =
         batch.triangle_count - first < kLanes ? batch.triangle_count - first : kLanes;
-    if constexpr (requires(std::size_t v) { visitor.prefetch_vertex(v); }) {
+    if constexpr (requires(const std::uint32_t* v) { visitor.prefetch_vertices(v, 0); }) {
       // A mesh's vertices are read in the order of its indices, which the hardware prefetcher
       // cannot follow: the vertices of the group kPrefetchGroups on are fetched while this one
       // is set up and drawn.
       constexpr std::size_t kAhead = kPrefetchGroups * kLanes;
-      if (batch.indices != nullptr && first + kAhead + kLanes <= batch.triangle_count) {
-        const std::uint32_t* ahead = batch.indices + 3 * (first + kAhead);
-        for (std::size_t i = 0; i < 3 * kLanes; ++i) {
-          const std::size_t v = ahead[i];
-          if (v < batch.vertex_count) {
-            __builtin_prefetch(batch.vertices + v);
-            visitor.prefetch_vertex(v);
-          }
-        }
-      }
+      if (batch.indices != nullptr && first + kAhead + kLanes <= batch.triangle_count)
+        visitor.prefetch_vertices(batch.indices + 3 * (first + kAhead), 3 * kLanes);
     }
     bool all_valid = count == kLanes;
     for (std::size_t l = 0; l < kLanes; ++l) {
