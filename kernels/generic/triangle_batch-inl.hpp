@@ -149,12 +149,13 @@ struct VisibleGroup {
   }
 };
 
+// How many groups ahead of the one set up run_batch() prefetches a mesh's vertices.
+inline constexpr std::size_t kPrefetchGroups = 4;
+
 // Fetches, sets up and walks every triangle of the batch, a group of setup lanes at a time.
 // The walks (walk_block, walk_spans, walk_tiles) are kept out of line: with one visitor per
 // translation unit the compiler inlined them into this loop, which ran the coverage benchmark's
 // 8-px triangles 9% slower on AVX2 (AMD Zen 4) with fewer instructions.
-inline constexpr std::size_t kPrefetchGroups = 4;
-
 template <class Visitor>
 void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterReport& report) {
   constexpr std::size_t kLanes = kSetupLanes<Arch>;
