@@ -14,12 +14,10 @@
 // floor(max - 1/2 + r) for a sample reach r of 0 or 1/2 px, are exact too: min - 1/2 - r is a
 // multiple of 2^-8 below 2^15 + 1 in magnitude, 24 bits. A lane where fl(p) = fl(q) (zero area,
 // or one too small to tell), or whose vertices are not snapped into the band, or whose index is
-// out of range, is decided by set-up's own arithmetic in double (drop_decision()).
+// out of range, is decided by set-up's own arithmetic, one triangle at a time (drop_decision()).
 #pragma once
 
-#include <algorithm>
 #include <bit>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -27,6 +25,7 @@
 #include <xsimd/xsimd.hpp>
 
 #include "../src/kernel_table.hpp"
+#include "../src/triangle_binning.hpp"
 #include "edgewise/coverage.hpp"
 #include "simd_ops-inl.hpp"
 #include "texel_fetch-inl.hpp"
@@ -95,38 +94,25 @@ template <class Arch>
   y = gather_float<Arch>(xy + 1, offset);
 }
 
-// Whether set-up culls the triangle of `corner` (triangle_setup-inl.hpp, the same operations),
-// or draws it with no sample of `window` in its box: its indices in range and its vertices in
-// the guard band after snapping, with zero area or facing away under `cull`, or a box that
-// setup_triangles() finds empty.
+// What the pass does with the triangle of `corner`: set-up's decisions in its exact arithmetic
+// (classify_triangle(), the binning's), kept when an index is out of range or a vertex is not
+// snapped into the band, for set-up to report.
 inline DropDecision drop_decision(const Vec2* vertices, std::size_t vertex_count,
                                   const std::uint32_t (&corner)[3], CullMode cull,
                                   const detail::SampleWindow& window) {
-  const double band = static_cast<double>(kGuardBandFixed);
-  double x[3], y[3];
-  for (int i = 0; i < 3; ++i) {
-    if (corner[i] >= vertex_count) return DropDecision::keep;
-    const double sx = static_cast<double>(vertices[corner[i]].x) * 256.0;
-    const double sy = static_cast<double>(vertices[corner[i]].y) * 256.0;
-    x[i] = std::nearbyint(sx);
-    y[i] = std::nearbyint(sy);
-    if (!(std::fabs(sx) <= band && std::fabs(sy) <= band && x[i] < band && y[i] < band))
+  if (corner[0] >= vertex_count || corner[1] >= vertex_count || corner[2] >= vertex_count)
+    return DropDecision::keep;
+  const Vec2 v[3] = {vertices[corner[0]], vertices[corner[1]], vertices[corner[2]]};
+  PixelRect box{};
+  switch (detail::classify_triangle(v, cull, window.clip, box, window.reach)) {
+    case TriangleStatus::culled_zero_area:
+    case TriangleStatus::culled_winding:
+      return DropDecision::culled;
+    case TriangleStatus::drawn:
+      return box.empty() ? DropDecision::unseen : DropDecision::keep;
+    default:
       return DropDecision::keep;
   }
-  const double area2 = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
-  if (area2 == 0.0 || (cull == CullMode::clockwise && area2 > 0.0) ||
-      (cull == CullMode::counter_clockwise && area2 < 0.0)) {
-    return DropDecision::culled;
-  }
-  const double reach = window.reach;
-  const auto empty = [&](const double(&v)[3], std::int32_t first, std::int32_t end) {
-    const double lo = std::min({v[0], v[1], v[2]}), hi = std::max({v[0], v[1], v[2]});
-    return std::max(std::floor((lo + 127.0 - reach) / 256.0), static_cast<double>(first)) >=
-           std::min(std::floor((hi - 128.0 + reach) / 256.0) + 1.0, static_cast<double>(end));
-  };
-  return empty(x, window.clip.x0, window.clip.x1) || empty(y, window.clip.y0, window.clip.y1)
-             ? DropDecision::unseen
-             : DropDecision::keep;
 }
 
 // Drops from `indices` (three per triangle, into `vertices`) every triangle set-up would cull,
