@@ -242,12 +242,16 @@ EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> wrap_any_index(xsimd::batch<std
   return xsimd::select(r >= n, period - Ints(1) - r, r);
 }
 
+// Lane j of the byte shuffle (pshufb) that moves byte k of each 32-bit lane of a 128-bit block to
+// the lane's lowest byte and zeroes the others (index bit 7 set).
+constexpr std::int32_t byte_k_selector(int k, int j) {
+  return static_cast<std::int32_t>(0x80808000u + 4 * j + k);
+}
+
 #if defined(__SSSE3__)
-// The byte shuffle (pshufb) that moves byte k of each 32-bit lane of a 128-bit block to the
-// lane's lowest byte and zeroes the others (index bit 7 set).
 EDGEWISE_INLINE __m128i byte_k_of_lanes(int k) {
-  const auto lane = [k](int j) { return static_cast<std::int32_t>(0x80808000u + 4 * j + k); };
-  return _mm_setr_epi32(lane(0), lane(1), lane(2), lane(3));
+  return _mm_setr_epi32(byte_k_selector(k, 0), byte_k_selector(k, 1), byte_k_selector(k, 2),
+                        byte_k_selector(k, 3));
 }
 #endif
 
@@ -260,8 +264,11 @@ EDGEWISE_INLINE xsimd::batch<float, Arch> decode_channel(const detail::TextureDe
   Ints code;
 #if defined(__AVX2__)
   if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Ints::size == 8) {
-    const __m128i select_byte = byte_k_of_lanes(k);
-    code = _mm256_shuffle_epi8(packed, _mm256_broadcastsi128_si256(select_byte));
+    // A 256-bit constant, not a broadcast 128-bit one: the compiler then reads it as the
+    // shuffle's memory operand instead of building it in a register (and spilling it).
+    const auto lane = [k](int j) { return byte_k_selector(k, j); };
+    code = _mm256_shuffle_epi8(packed, _mm256_setr_epi32(lane(0), lane(1), lane(2), lane(3),
+                                                         lane(0), lane(1), lane(2), lane(3)));
   } else
 #endif
 #if defined(__SSSE3__)
