@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <numbers>
+#include <sstream>
 #include <vector>
 
 #include "benchmarks.hpp"
@@ -91,10 +92,69 @@ std::vector<MeshScene> load_meshes() {
   return scenes;
 }
 
+// The names listed in EDGEWISE_BENCH_GRIDS, separated by commas.
+std::vector<std::string> grid_names() {
+  std::vector<std::string> names;
+  const char* list = std::getenv("EDGEWISE_BENCH_GRIDS");
+  if (list == nullptr) return names;
+  std::istringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    if (!name.empty()) names.push_back(name);
+  }
+  return names;
+}
+
+// kGridSide^3 copies of `mesh` in a lattice, a fifth of the box's extent apart on each axis, as
+// one indexed mesh.
+scene::Mesh grid_of(const scene::Mesh& mesh, const scene::Box3& box) {
+  const Vec3 step{1.2f * (box.max.x - box.min.x), 1.2f * (box.max.y - box.min.y),
+                  1.2f * (box.max.z - box.min.z)};
+  scene::Mesh grid;
+  for (int i = 0; i < kGridSide; ++i) {
+    for (int j = 0; j < kGridSide; ++j) {
+      for (int k = 0; k < kGridSide; ++k) {
+        scene::Mesh copy = mesh;
+        for (Vec3& p : copy.positions) {
+          p.x += static_cast<float>(i) * step.x;
+          p.y += static_cast<float>(j) * step.y;
+          p.z += static_cast<float>(k) * step.z;
+        }
+        scene::append(grid, copy);
+      }
+    }
+  }
+  return grid;
+}
+
+// The grids of the loaded meshes EDGEWISE_BENCH_GRIDS names, appended as grid27-<mesh>.
+void add_grids(std::vector<MeshScene>& scenes) {
+  for (const std::string& name : grid_names()) {
+    const auto source = std::find_if(scenes.begin(), scenes.end(),
+                                     [&](const MeshScene& s) { return s.name == name; });
+    if (source == scenes.end()) {
+      std::cerr << "EDGEWISE_BENCH_GRIDS: no mesh " << name << " among the loaded ones\n";
+      continue;
+    }
+    const std::optional<scene::Box3> box = scene::bounding_box(source->mesh);
+    if (!box) continue;
+    MeshScene grid;
+    grid.name = "grid" + std::to_string(kGridSide * kGridSide * kGridSide) + "-" + name;
+    grid.mesh = grid_of(source->mesh, *box);
+    const std::optional<scene::Box3> grid_box = scene::bounding_box(grid.mesh);
+    if (!grid_box) continue;
+    grid.transform = framing_transform(*grid_box);
+    scenes.push_back(std::move(grid));
+  }
+}
+
 }  // namespace
 
 std::span<const MeshScene> mesh_scenes() {
-  static const std::vector<MeshScene> scenes = load_meshes();
+  static const std::vector<MeshScene> scenes = [] {
+    std::vector<MeshScene> loaded = load_meshes();
+    add_grids(loaded);
+    return loaded;
+  }();
   return scenes;
 }
 

@@ -10,6 +10,10 @@
 //   back faces culled, depth test less with writes, plane equations, perspective-correct.
 // Triangle counts, sizes on screen and overdraw are those of the meshes: the mix of small and
 // large triangles a renderer actually meets, unlike the one-size sets of shading_scene.hpp.
+// Then, for each loaded mesh named in EDGEWISE_BENCH_GRIDS (comma-separated names without
+// ".obj"), grid27-<mesh>: 27 copies of it in a 3x3x3 lattice (a fifth of the mesh's box apart),
+// one indexed mesh framed as a whole, so that a frame holds millions of triangles (27 ogres hold
+// 3.35 M): the draws whose front end and bins must scale to many cores.
 #pragma once
 
 #include <span>
@@ -26,8 +30,11 @@ struct MeshScene {
   Mat4 transform;    // object space to clip space
 };
 
-// The default scene, then the meshes sorted by name, loaded on first use. Files that do not load
-// are reported on standard error and left out.
+// The copies per axis of a grid scene.
+inline constexpr int kGridSide = 3;
+
+// The default scene, then the meshes sorted by name, then the grids, loaded on first use. Files
+// that do not load are reported on standard error and left out.
 std::span<const MeshScene> mesh_scenes();
 
 // The meshes' draw() settings (see the top of this file) on `isa`, one thread.

@@ -612,8 +612,10 @@ def print_multisample(multisample, draw_peers):
           "diff' per draw (depth rounding at near-ties)")
 
 
-# The mesh benchmarks' built-in scene (bench/mesh_scenes.cpp), beside the OBJ meshes.
+# The mesh benchmarks' built-in scene (bench/mesh_scenes.cpp), beside the OBJ meshes, and the
+# prefix of their grids of copies of a mesh (EDGEWISE_BENCH_GRIDS).
 BUILT_IN_SCENE = "default_scene"
+GRID_SCENE = re.compile(r"^grid\d+-")
 
 
 def print_meshes(meshes, draw_peers):
@@ -629,6 +631,8 @@ def print_meshes(meshes, draw_peers):
               "serial share", "model 16", "model 64"]
     rows, ratios_one, ratios_all, scaling = [], [], [], []
     models = {"model16": [], "model64": []}
+    grids = {"all cores / 1 thread": [], "modelled 16 threads / 1 thread": [],
+             "serial share": []}
 
     for name in names:
         one = meshes.get((name, isa, False))
@@ -647,14 +651,22 @@ def print_meshes(meshes, draw_peers):
         row.append(ratio(t_one, t_all) if t_one and t_all else "-")
         counters = every or {}
         row.append(f"{counters['serial_share'] * 100:.2f}%" if "serial_share" in counters else "-")
+        grid = GRID_SCENE.match(name) is not None
         for key, values in models.items():
             row.append(f"{counters[key]:.3g}x" if key in counters else "-")
-            if key in counters and name != BUILT_IN_SCENE:
+            if key in counters and name != BUILT_IN_SCENE and not grid:
                 values.append(counters[key])
         rows.append(row)
-        # The medians are over the OBJ meshes, as the targets are: the built-in scene is a table
-        # row only.
-        if name == BUILT_IN_SCENE:
+        if grid:
+            if t_one and t_all:
+                grids["all cores / 1 thread"].append((name, t_one / t_all))
+            if "model16" in counters:
+                grids["modelled 16 threads / 1 thread"].append((name, counters["model16"]))
+            if "serial_share" in counters:
+                grids["serial share"].append((name, counters["serial_share"]))
+        # The medians are over the OBJ meshes, as the targets are: the built-in scene and the
+        # grids are table rows only.
+        if name == BUILT_IN_SCENE or grid:
             continue
         if p_one and t_one:
             ratios_one.append(p_one / t_one)
@@ -669,9 +681,14 @@ def print_meshes(meshes, draw_peers):
                           ("modelled 16 threads / 1 thread", models["model16"]),
                           ("modelled 64 threads / 1 thread", models["model64"])):
         if values:
-            print(f"median over {len(values)} meshes ({BUILT_IN_SCENE} apart), {label}: "
+            print(f"median over {len(values)} meshes ({BUILT_IN_SCENE} and grids apart), {label}: "
                   f"{statistics.median(values):.3g}x "
                   f"(min {min(values):.3g}x, max {max(values):.3g}x)")
+    for label, values in grids.items():
+        if values:
+            cells = ", ".join(f"{name} {value * 100:.2f}%" if label == "serial share" else
+                              f"{name} {value:.3g}x" for name, value in values)
+            print(f"grids of copies of a mesh, {label}: {cells}")
     print("llvmpipe times are its DrawPeer/ medians (1 thread: CPU time; default: wall-clock); "
           "edgewise 1 thread: CPU time; all cores: wall-clock time; serial share: the calling "
           "thread's time outside the draw's tasks over the one-thread time; model 16, 64: the "
