@@ -132,23 +132,33 @@ template <bool kReadsDerivatives, bool kStoredUnits = true, class Queries, class
     const std::size_t n = count - first < kLanes ? count - first : kLanes;
     QueryLanes<Arch> q = queries.load(first, n);
     const auto position_ok = (xsimd::abs(q.s) <= largest) & (xsimd::abs(q.t) <= largest);
-    q.s = xsimd::select(position_ok, q.s, Floats(0.0f));
-    q.t = xsimd::select(position_ok, q.t, Floats(0.0f));
     auto derivatives_ok = position_ok;
+    Floats* derivatives[4] = {&q.dsdx, &q.dtdx, &q.dsdy, &q.dtdy};
     if constexpr (kReadsDerivatives) {
-      Floats* fields[4] = {&q.dsdx, &q.dtdx, &q.dsdy, &q.dtdy};
-      for (Floats* d : fields)
+      for (Floats* d : derivatives)
         derivatives_ok = derivatives_ok & (xsimd::abs(*d) <= largest);
-      for (Floats* d : fields)
-        *d = xsimd::select(derivatives_ok, *d, Floats(0.0f));
+    }
+    // The usual batch has no bad lane: it skips the replacements (a branch per batch).
+    const bool all_ok = xsimd::all(derivatives_ok);
+    if (!all_ok) {
+      q.s = xsimd::select(position_ok, q.s, Floats(0.0f));
+      q.t = xsimd::select(position_ok, q.t, Floats(0.0f));
+      if constexpr (kReadsDerivatives) {
+        for (Floats* d : derivatives)
+          *d = xsimd::select(derivatives_ok, *d, Floats(0.0f));
+      }
     }
     Rgba<Arch> rgba = filter(q);
     for (int k = 0; k < 4; ++k) {
       if constexpr (kStoredUnits) rgba.c[k] = rgba.c[k] * scale[k];
-      if constexpr (kReadsDerivatives) {
-        rgba.c[k] = xsimd::select(derivatives_ok, rgba.c[k], coarsest_linear[k]);
+    }
+    if (!all_ok) {
+      for (int k = 0; k < 4; ++k) {
+        if constexpr (kReadsDerivatives) {
+          rgba.c[k] = xsimd::select(derivatives_ok, rgba.c[k], coarsest_linear[k]);
+        }
+        rgba.c[k] = xsimd::select(position_ok, rgba.c[k], Floats(0.0f));
       }
-      rgba.c[k] = xsimd::select(position_ok, rgba.c[k], Floats(0.0f));
     }
     out.store(rgba, first, n);
   }
