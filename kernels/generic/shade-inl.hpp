@@ -45,6 +45,12 @@ class ShadingVisitor {
   static constexpr std::size_t kLanes = Floats::size;
   static constexpr std::size_t kParts = kTileSize / kLanes;
   static constexpr int kPlanes = kShadingPlanes;
+#if defined(EDGEWISE_HAS_AVX512_256)
+  // Colour from planes with depth writes steps two tile rows per batch (shade_planar_row_pairs).
+  static constexpr bool kRowPairs = std::is_same_v<Arch, avx512_256>;
+#else
+  static constexpr bool kRowPairs = false;
+#endif
 
   explicit ShadingVisitor(const detail::ShadeBatch& batch)
       : batch_(batch),
@@ -241,7 +247,7 @@ class ShadingVisitor {
     ColumnTerms columns;
     set_up_tile_columns(px, columns);
     // The walks deliver a triangle's tiles row by row: the row terms serve a whole tile row.
-    if (colour_planes_ && !constant_ && tile_y != row_bases_tile_y_) {
+    if (needs_row_bases() && tile_y != row_bases_tile_y_) {
       set_up_colour_rows(py, row_bases_);
       row_bases_tile_y_ = tile_y;
     }
@@ -542,7 +548,7 @@ class ShadingVisitor {
           shade_rows<Test, true>(mask, rows, depth, color, tile_px, tile_py, columns[column],
                                  nullptr, stored_max);
         } else {
-          if (colour_planes_ && !constant_ && set_up_row != row) {
+          if (needs_row_bases() && set_up_row != row) {
             set_up_colour_rows(tile_py, colour_row_bases);
             set_up_row = row;
           }
@@ -559,6 +565,13 @@ class ShadingVisitor {
         }
       }
     }
+  }
+
+  // Whether a tile's shading reads the colour planes' row terms from set_up_colour_rows(): not
+  // the row pairs of AVX-512 (untextured, depth written), which compute their own.
+  bool needs_row_bases() const {
+    if (!colour_planes_ || constant_) return false;
+    return textured_ || !(kRowPairs && batch_.depth_write);
   }
 
   // The tile's largest depth, over all 64 values after the writes, as its new bound:
@@ -669,6 +682,12 @@ class ShadingVisitor {
                                                 const ColumnTerms& columns,
                                                 const float (*colour_row_bases)[kTileSize],
                                                 Floats& stored_max) {
+#if defined(EDGEWISE_HAS_AVX512_256)
+    if constexpr (kRowPairs) {
+      return shade_planar_row_pairs<Test, Divide, Full, Lit, Uniform>(mask, rows, depth, color, py,
+                                                                      columns, stored_max);
+    }
+#endif
     std::uint64_t passed = 0;
     Floats largest = stored_max;
     for (int next = 0; Full ? next < kTileSize : rows != 0; ++next, rows &= rows - 1) {
@@ -725,6 +744,87 @@ class ShadingVisitor {
     passed_ += passed;
     stored_max = largest;
   }
+
+#if defined(EDGEWISE_HAS_AVX512_256)
+  // shade_planar_rows() on AVX-512, two tile rows per 512-bit batch: a small triangle covers
+  // about two pixels of each tile row it touches, so pairs of rows halve the steps (their row
+  // terms, mask handling and loop) for the same lanes of work. Each lane takes the same float
+  // operations on the same dx and dy as in the 8-lane loop (row r + 1's centre, r + 1.5, is exact),
+  // so the results are identical.
+  using PairFloats = xsimd::batch<float, xsimd::avx512bw>;
+  using PairInts = xsimd::batch<std::int32_t, xsimd::avx512bw>;
+  using PairMask = xsimd::batch_bool<float, xsimd::avx512bw>;
+
+  // An 8-lane row's values in both halves.
+  [[gnu::always_inline]] static PairFloats both_rows(Floats row) {
+    const __m256 half = row;
+    return PairFloats(_mm512_insertf32x8(_mm512_castps256_ps512(half), half, 1));
+  }
+
+  template <DepthTest Test, bool Divide, bool Full, bool Lit, bool Uniform>
+  [[gnu::always_inline]] void shade_planar_row_pairs(std::uint64_t mask, std::uint32_t rows,
+                                                     float* depth, std::uint32_t* color,
+                                                     std::int32_t py, const ColumnTerms& columns,
+                                                     Floats& stored_max) {
+    static_assert(kParts == 1, "one batch per tile row");
+    // Bit r set for each pair of rows r and r + 1 (r even) with a covered sample.
+    std::uint32_t pairs = Full ? 0x55u : (rows | rows >> 1) & 0x55u;
+    alignas(64) static constexpr float kPairRowCentre[16] = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f,
+                                                             0.5f, 0.5f, 1.5f, 1.5f, 1.5f, 1.5f,
+                                                             1.5f, 1.5f, 1.5f, 1.5f};
+    const PairFloats row_centre = PairFloats::load_aligned(kPairRowCentre);
+    const PairFloats depth_column = both_rows(columns.depth[0]);
+    PairFloats colour_column[kPlanes];
+    for (int k = Uniform ? kFirstNormalPlane : 0; k < kPlanes; ++k) {
+      if (k == 4 && !Divide) continue;
+      if (k >= kFirstNormalPlane && !Lit) break;
+      colour_column[k] = both_rows(columns.colour[k][0]);
+    }
+    std::uint64_t passed = 0;
+    PairFloats largest(-std::numeric_limits<float>::infinity());
+    for (; pairs != 0; pairs &= pairs - 1) {
+      const int row = std::countr_zero(pairs);
+      // depth_row_base()'s dy, the colour planes' too.
+      const PairFloats dy =
+          (PairFloats(static_cast<float>(py + row)) + row_centre) - PairFloats(depth_.y0);
+      const PairFloats z =
+          clamp01((PairFloats(depth_.z0) + PairFloats(depth_.dzdy) * dy) + depth_column);
+      float* depth_at = depth + static_cast<std::size_t>(row) * kTileSize;
+      const PairFloats stored = PairFloats::load_aligned(depth_at);
+      PairMask write = passes<Test>(z, stored);
+      if constexpr (!Full) write = write && PairMask(static_cast<__mmask16>(mask >> (8 * row)));
+      const PairFloats updated = xsimd::select(write, z, stored);
+      updated.store_aligned(depth_at);
+      largest = xsimd::max(largest, updated);
+      const __mmask16 written = write;
+      passed += static_cast<std::uint64_t>(std::popcount(static_cast<unsigned>(written)));
+      const auto plane_at = [&](int k) {
+        return (PairFloats(plane_[k].at_vertex) + PairFloats(plane_[k].dy) * dy) + colour_column[k];
+      };
+      PairFloats channel[4];
+      for (int k = 0; k < 4; ++k)
+        channel[k] = Uniform ? PairFloats(uniform_channel_[k]) : plane_at(k);
+      if constexpr (Divide) {
+        const PairFloats w = PairFloats(1.0f) / xsimd::max(plane_at(4), PairFloats(min_inverse_w_));
+        for (int k = 0; k < 4; ++k)
+          channel[k] = channel[k] * w;
+      }
+      if constexpr (Lit) {
+        PairFloats normal[kNormalPlanes];
+        for (int k = 0; k < kNormalPlanes; ++k)
+          normal[k] = plane_at(kFirstNormalPlane + k);
+        apply_light(normal, channel);
+      }
+      std::uint32_t* color_at = color + static_cast<std::size_t>(row) * kTileSize;
+      const __m512i packed = pack_rgba8_lanes<xsimd::avx512bw>(channel);
+      _mm512_mask_store_epi32(color_at, written, packed);
+    }
+    passed_ += passed;
+    const __m512 wide = largest;
+    stored_max = xsimd::max(stored_max, Floats(_mm256_max_ps(_mm512_castps512_ps256(wide),
+                                                             _mm512_extractf32x8_ps(wide, 1))));
+  }
+#endif
 
   template <DepthTest Test>
   [[gnu::always_inline]] void shade_rows_generic(std::uint64_t mask, std::uint32_t rows,
@@ -909,9 +1009,13 @@ class ShadingVisitor {
 
   // Planes in use: the fifth, 1 / w, only for perspective-correct colour (it is set up, as a
   // constant, when diffuse shading needs the normal planes after it).
-  int planes_used() const { return normal_planes_ ? kShadingPlanes : perspective_ ? 5 : 4; }
+  int planes_used() const {
+    return normal_planes_ ? kShadingPlanes : perspective_ ? 5 : 4;
+  }
   // The first of them: a uniform triangle's colour needs no planes.
-  int first_plane() const { return uniform_ ? kFirstNormalPlane : 0; }
+  int first_plane() const {
+    return uniform_ ? kFirstNormalPlane : 0;
+  }
 
   // Equal bit patterns (equal colours as stored; +0 and -0, or two NaNs, count as different).
   static bool same_bits(const Vec4& a, const Vec4& b) {
@@ -1013,7 +1117,9 @@ class ShadingVisitor {
     }
   }
 
-  static float horizontal_max(Floats v) { return lane_max<Arch>(v); }
+  static float horizontal_max(Floats v) {
+    return lane_max<Arch>(v);
+  }
 
   // Whether the depth test fails at every sample of the tile at (px, py). The samples lie in the
   // rectangle from the first pixel centre moved by the pattern's least offsets to the last one
@@ -1057,15 +1163,21 @@ class ShadingVisitor {
     return batch_.depth_test == DepthTest::less ? lowest >= bound : lowest > bound;
   }
 
-  static double larger(double a, double b) { return a > b ? a : b; }
-  static Floats clamp01(Floats z) { return xsimd::min(xsimd::max(z, Floats(0.0f)), Floats(1.0f)); }
-  template <DepthTest Test>
-  [[gnu::always_inline]] static Mask passes(Floats z, Floats stored) {
+  static double larger(double a, double b) {
+    return a > b ? a : b;
+  }
+  template <class F>
+  static F clamp01(F z) {
+    return xsimd::min(xsimd::max(z, F(0.0f)), F(1.0f));
+  }
+  template <DepthTest Test, class F>
+  [[gnu::always_inline]] static typename F::batch_bool_type passes(F z, F stored) {
+    using Bools = typename F::batch_bool_type;
     if constexpr (Test == DepthTest::less) return z < stored;
     if constexpr (Test == DepthTest::less_equal) return z <= stored;
     if constexpr (Test == DepthTest::greater) return z > stored;
-    if constexpr (Test == DepthTest::always) return Mask(true);
-    return Mask(false);
+    if constexpr (Test == DepthTest::always) return Bools(true);
+    return Bools(false);
   }
 
   // Gouraud colour by its own plane equations (model no more than the scene needs: one add per
@@ -1106,14 +1218,14 @@ class ShadingVisitor {
 
   // Diffuse light on R, G and B: ambient + (1 - ambient) max(0, n . l / |n|), with `n` the
   // interpolated normal or its planes' value (any positive multiple gives the same light).
-  [[gnu::always_inline]] void apply_light(const Floats (&n)[kNormalPlanes], Floats* channel) const {
-    const Floats length = xsimd::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const Floats facing = n[0] * Floats(batch_.light.x) + n[1] * Floats(batch_.light.y) +
-                          n[2] * Floats(batch_.light.z);
+  template <class F>
+  [[gnu::always_inline]] void apply_light(const F (&n)[kNormalPlanes], F* channel) const {
+    const F length = xsimd::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const F facing = n[0] * F(batch_.light.x) + n[1] * F(batch_.light.y) + n[2] * F(batch_.light.z);
     // A zero normal gives no direct light, not NaN.
-    const Floats lambert = xsimd::select(length > Floats(0.0f),
-                                         xsimd::max(facing / length, Floats(0.0f)), Floats(0.0f));
-    const Floats light = Floats(batch_.ambient) + Floats(1.0f - batch_.ambient) * lambert;
+    const F lambert =
+        xsimd::select(length > F(0.0f), xsimd::max(facing / length, F(0.0f)), F(0.0f));
+    const F light = F(batch_.ambient) + F(1.0f - batch_.ambient) * lambert;
     for (int k = 0; k < 3; ++k)
       channel[k] = channel[k] * light;
   }
