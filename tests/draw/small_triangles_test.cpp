@@ -13,6 +13,7 @@
 #include "draw/colour_bounds.hpp"
 #include "draw/draw_scenes.hpp"
 #include "edgewise/draw.hpp"
+#include "edgewise/isa.hpp"
 #include "isa_params.hpp"
 #include "random.hpp"
 
@@ -118,6 +119,44 @@ TEST_P(SmallTriangles, ColoursWithinTheDerivedBound) {
 }
 
 EDGEWISE_INSTANTIATE_PER_ISA(SmallTriangles, every_isa());
+
+// AVX-512 shades colour from planes two tile rows per batch, AVX2 one row: the same float
+// operations per pixel, so the two images are identical bit for bit, small triangles (the tile
+// grid) and larger ones (the tile walk) alike, with colours that vary and one colour per
+// triangle, under every depth test that writes through those rows.
+TEST(RowPairs, Avx512DrawsTheAvx2ImageBitForBit) {
+  if (!isa_supported(Isa::avx512) || !isa_supported(Isa::avx2)) {
+    GTEST_SKIP() << "this CPU lacks AVX-512 or AVX2";
+  }
+  Random random(23);
+  Scene varying = random_scene(random, 3000, static_cast<double>(kWidth) / kHeight, 0.005, 0.3);
+  Scene uniform = varying;
+  uniform.colors.assign(uniform.colors.size(), Vec4{0.8f, 0.6f, 0.4f, 1.0f});
+  std::uint64_t passed = 0;
+  for (const Scene* scene : {&varying, &uniform}) {
+    for (Perspective perspective : {Perspective::correct, Perspective::affine}) {
+      for (Shading shading : {Shading::gouraud, Shading::diffuse}) {
+        for (DepthTest test : {DepthTest::less, DepthTest::less_equal, DepthTest::greater}) {
+          DrawOptions options = perspective_options(kWidth, kHeight);
+          options.perspective = perspective;
+          options.shading = shading;
+          options.depth_test = test;
+          const Rendered avx2 = render(Isa::avx2, *scene, options, kWidth, kHeight);
+          const Rendered avx512 = render(Isa::avx512, *scene, options, kWidth, kHeight);
+          const std::string where = std::string(scene == &uniform ? "uniform " : "varying ") +
+                                    std::string(name_of(perspective)) + " " +
+                                    std::string(name_of(shading)) + " " +
+                                    std::string(name_of(test));
+          ASSERT_EQ(avx512.depth, avx2.depth) << where;
+          ASSERT_EQ(avx512.rgba, avx2.rgba) << where;
+          EXPECT_EQ(avx512.report.fragments_passed, avx2.report.fragments_passed) << where;
+          passed += avx2.report.fragments_passed;
+        }
+      }
+    }
+  }
+  EXPECT_GT(passed, 100000u);  // the images hold enough drawn pixels to decide something
+}
 
 }  // namespace
 }  // namespace edgewise::test::small_triangles
