@@ -511,23 +511,28 @@ class ShadingVisitor {
                                          const std::uint64_t (&masks)[N][N]) {
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
     const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
-    std::uint64_t in_column[N] = {}, in_row[N] = {};
-    for (std::size_t row = 0; row < N; ++row) {
-      for (std::size_t column = 0; column < N; ++column) {
-        in_column[column] |= masks[row][column];
-        in_row[row] |= masks[row][column];
+    // Bit k of each: tile row or column k holds a covered sample. Flags rather than the masks
+    // ORed together: the compiler turned those ORs into vector loads of masks the walk had just
+    // stored as 64-bit values, which cannot be forwarded from the stores and stalled each call.
+    std::uint32_t rows_in = 0, columns_in = 0;
+    for (std::uint32_t row = 0; row < N; ++row) {
+      for (std::uint32_t column = 0; column < N; ++column) {
+        if (masks[row][column] != 0) {
+          rows_in |= 1u << row;
+          columns_in |= 1u << column;
+        }
       }
     }
     ColumnTerms columns[N];
-    for (std::size_t column = 0; column < N; ++column) {
-      if (in_column[column] != 0) {
+    for (std::uint32_t column = 0; column < N; ++column) {
+      if ((columns_in >> column) & 1u) {
         set_up_tile_columns(px + static_cast<std::int32_t>(column) * kTileSize, columns[column]);
       }
     }
     alignas(64) float colour_row_bases[kPlanes][kTileSize];
     std::uint32_t set_up_row = N;  // the tile row colour_row_bases holds
     for (std::uint32_t row = 0; row < N; ++row) {
-      if (in_row[row] == 0) continue;
+      if (((rows_in >> row) & 1u) == 0) continue;
       const std::int32_t tile_py = py + static_cast<std::int32_t>(row) * kTileSize;
       for (std::uint32_t column = 0; column < N; ++column) {
         const std::uint64_t mask = masks[row][column];
