@@ -757,7 +757,6 @@ class ShadingVisitor {
   // operations on the same dx and dy as in the 8-lane loop (row r + 1's centre, r + 1.5, is exact),
   // so the results are identical.
   using PairFloats = xsimd::batch<float, xsimd::avx512bw>;
-  using PairInts = xsimd::batch<std::int32_t, xsimd::avx512bw>;
   using PairMask = xsimd::batch_bool<float, xsimd::avx512bw>;
 
   // An 8-lane row's values in both halves.
