@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Every file the documentation names exists, and every section of docs/DESIGN.md the code cites
-# is a heading there, so that from a document or a comment the next file is one hop away.
+# Every file the documentation names or links exists, every link's anchor is a heading of the
+# page it names, and every section of docs/DESIGN.md the code cites is a heading there, so that
+# from a document or a comment the next file is one hop away.
 #
 #   references_exist.sh REPOSITORY_ROOT
 #
@@ -39,6 +40,34 @@ for document in "${documents[@]}"; do
     sort -u)
 done
 
+# GitHub's anchor for each heading of a Markdown file: lower case, punctuation dropped, spaces
+# as hyphens.
+anchors_of() {
+  grep -E '^#+ ' "$1" | sed -E 's/^#+ //' | tr '[:upper:]' '[:lower:]' |
+    sed -E 's/[^a-z0-9 _-]//g; s/ /-/g'
+}
+
+# A Markdown link, [text](target), resolves from the document's folder to a file or folder, and
+# its #anchor, where it has one into a Markdown file, to one of that file's headings.
+for document in "${documents[@]}"; do
+  folder=$(dirname "$document")
+  while read -r target; do
+    [[ $target =~ ^(https?|mailto): ]] && continue
+    path=${target%%#*}
+    anchor=
+    [[ $target == *#* ]] && anchor=${target#*#}
+    resolved=$document
+    [[ -n $path ]] && resolved=$folder/$path
+    if [[ ! -e $resolved ]]; then
+      fail "$document links to $target, which does not exist"
+      continue
+    fi
+    if [[ -n $anchor && $resolved == *.md ]] && ! anchors_of "$resolved" | grep -qxF "$anchor"; then
+      fail "$document links to $target: no heading of $resolved has the anchor #$anchor"
+    fi
+  done < <(grep -oE '\]\([^)[:space:]]+\)' "$document" | sed -E 's/^\]\((.*)\)$/\1/' | sort -u)
+done
+
 headings=$(grep -E '^##+ ' docs/DESIGN.md | sed -E 's/^#+ //')
 while IFS= read -r citation; do
   section=${citation#*\"}
@@ -51,4 +80,4 @@ if ((failures > 0)); then
   echo "$failures broken references" >&2
   exit 1
 fi
-echo "every referenced file and cited section exists"
+echo "every referenced file, link and cited section exists"

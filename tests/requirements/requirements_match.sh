@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# README.md's "Requirements" table shows exactly the package lists of tools/lib/deps.sh: one row
+# The table of docs/requirements.md shows exactly the package lists of tools/lib/deps.sh: one row
 # for tools/demo and one per stage of tools/check (the stages its `stages=(...)` line names),
 # each with the same packages. Every package in a list has its reason on its own line of
 # deps.sh ("name  # why").
@@ -10,7 +10,7 @@
 set -euo pipefail
 
 root=$1
-readme="$root/README.md"
+table="$root/docs/requirements.md"
 deps="$root/tools/lib/deps.sh"
 # shellcheck source=../../tools/lib/deps.sh
 source "$deps"
@@ -29,10 +29,9 @@ stage_line=$(grep -E '^stages=\(' "$root/tools/check") || {
 read -r -a stages <<<"$(sed -E 's/^stages=\((.*)\)$/\1/' <<<"$stage_line")"
 ((${#stages[@]} > 0)) || fail "tools/check names no stages"
 
-# The table rows of the Requirements section: "| <command> | `pkg` `pkg` ... |".
-section=$(sed -n '/^### Requirements$/,/^#/p' "$readme" | sed '1d;$d')
-[[ -n $section ]] || fail "README.md has no '### Requirements' section"
-declare -A readme_packages
+# The table's rows: "| <command> | `pkg` `pkg` ... |".
+[[ -f $table ]] || fail "docs/requirements.md is missing"
+declare -A table_packages
 while IFS= read -r row; do
   command=$(cut -d'|' -f2 <<<"$row")
   packages=$(cut -d'|' -f3 <<<"$row")
@@ -41,23 +40,23 @@ while IFS= read -r row; do
     *'`tools/check` stage `'*) key=$(sed -E 's/.*stage `([^`]*)`.*/\1/' <<<"$command") ;;
     *) continue ;;
   esac
-  [[ -z ${readme_packages[$key]+set} ]] || fail "README.md has two rows for '$key'"
-  readme_packages[$key]=$({ grep -oE '`[^`]+`' <<<"$packages" || true; } | tr -d '`' | sort -u \
+  [[ -z ${table_packages[$key]+set} ]] || fail "docs/requirements.md has two rows for '$key'"
+  table_packages[$key]=$({ grep -oE '`[^`]+`' <<<"$packages" || true; } | tr -d '`' | sort -u \
     | tr '\n' ' ')
-done < <(grep -E '^\|' <<<"$section")
+done < <(grep -E '^\|' "$table")
 
-# compare KEY PACKAGES...: the README row KEY lists exactly PACKAGES.
+# compare KEY PACKAGES...: the table's row KEY lists exactly PACKAGES.
 compare() {
   local key=$1
   shift
   local listed
   listed=$(printf '%s\n' "$@" | sort -u | tr '\n' ' ')
-  if [[ -z ${readme_packages[$key]+set} ]]; then
-    fail "README.md's Requirements table has no row for '$key' (deps.sh lists: $listed)"
-  elif [[ ${readme_packages[$key]} != "$listed" ]]; then
-    fail "'$key': README.md lists '${readme_packages[$key]}', tools/lib/deps.sh '$listed'"
+  if [[ -z ${table_packages[$key]+set} ]]; then
+    fail "docs/requirements.md has no row for '$key' (deps.sh lists: $listed)"
+  elif [[ ${table_packages[$key]} != "$listed" ]]; then
+    fail "'$key': docs/requirements.md lists '${table_packages[$key]}', tools/lib/deps.sh '$listed'"
   fi
-  unset "readme_packages[$key]"
+  unset "table_packages[$key]"
 }
 
 compare demo "${EDGEWISE_DEMO_PACKAGES[@]}"
@@ -70,8 +69,8 @@ for stage in "${stages[@]}"; do
   compare "$stage" "${packages[@]}"
   all_packages+=("${packages[@]}")
 done
-for key in "${!readme_packages[@]}"; do
-  fail "README.md has a row for '$key', which is not tools/demo or a stage of tools/check"
+for key in "${!table_packages[@]}"; do
+  fail "docs/requirements.md has a row for '$key', which is not tools/demo or a stage of tools/check"
 done
 
 # The fresh stage runs the check on the demo's root (tools/check_fresh_debian.sh): the check's
@@ -95,4 +94,4 @@ done
 if ((failures > 0)); then
   exit 1
 fi
-echo "README.md's Requirements match tools/lib/deps.sh: tools/demo and ${#stages[@]} check stages"
+echo "docs/requirements.md matches tools/lib/deps.sh: tools/demo and ${#stages[@]} check stages"

@@ -4,7 +4,7 @@
 #
 # One list for tools/demo and one per stage of tools/check; tools/check installs the lists of the
 # stages it runs. Each list names what its command uses itself, with the reason beside it, and
-# leaves what those packages depend on to apt. README.md's "Requirements" table shows the same
+# leaves what those packages depend on to apt. docs/requirements.md shows the same
 # lists; tests/requirements compares the two. The `fresh` stage proves them: each command, run
 # first on a minimal Debian root, must pass with what it installed itself.
 #
