@@ -1,5 +1,5 @@
-// draw()'s vertex stage, triangle-parallel (docs/DESIGN.md, "The vertex stage"). Two passes,
-// each over a range (so that ranges may run on several threads):
+// draw()'s vertex stage, triangle-parallel (docs/design/vertex-stage.md, "The vertex stage"). Two
+// passes, each over a range (so that ranges may run on several threads):
 // - mesh vertices, a batch at a time, through ScreenMapping: screen vertex i is mesh vertex i,
 //   so no vertex is looked up or remapped, and each vertex's class is kept as a code;
 // - triangles in the mesh's order, a block of one triangle per lane at a time: when the codes of

@@ -18,9 +18,9 @@ std::int64_t cross(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64
   return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 
-// docs/DESIGN.md, "Fill rule and watertightness": a top edge is exactly horizontal with the third
-// vertex below it (larger y); a left edge is not horizontal and has the interior (the third
-// vertex's side) to its right.
+// docs/design/rasterization.md, "Fill rule and watertightness": a top edge is exactly horizontal
+// with the third vertex below it (larger y); a left edge is not horizontal and has the interior
+// (the third vertex's side) to its right.
 bool is_top_left(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
                  std::int64_t cx, std::int64_t cy) {
   if (ay == by) return cy > ay;

@@ -1,5 +1,5 @@
 // The exact-area reference: how much of a pixel's square a snapped triangle covers. It is the
-// ground truth for every anti-aliasing mode (docs/DESIGN.md, "Anti-aliasing").
+// ground truth for every anti-aliasing mode (docs/design/anti-aliasing.md).
 //
 // The pixel's square is clipped by the triangle's three edges, one half-plane at a time
 // (Sutherland-Hodgman), in double precision in the pixel's own frame, and the area of what is

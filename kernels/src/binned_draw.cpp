@@ -1,4 +1,4 @@
-// draw() on several threads: sort-middle binning (docs/DESIGN.md, "Threads"). Ranges of
+// draw() on several threads: sort-middle binning (docs/design/threads.md). Ranges of
 // triangles are binned at once, each into lists of its own; then each bin is shaded by one task
 // that walks the ranges' lists in range order, which is submission order, through the same
 // kernel as a one-thread call, with the bin as the clip rectangle. Every tile lies in one bin,
@@ -20,7 +20,7 @@ namespace edgewise::detail {
 
 // Multisampled targets are drawn in bins on one thread too: a bin's samples stay in cache (see
 // BinGrid), where drawing each triangle straight into a target of several times the single-sample
-// size misses the cache at every tile (docs/DESIGN.md, "Anti-aliasing").
+// size misses the cache at every tile (docs/design/anti-aliasing.md).
 bool DrawCall::binned() const {
   return (workers.threads > 1 || samples > 1) &&
          BinGrid(clip, workers.threads, samples).count() > 1;
@@ -134,7 +134,7 @@ std::vector<std::size_t> bin_loads(const BinGrid& grid, const BinLists& lists, s
 
 // A task's estimated cost in triangles: its triangles, and a triangle for every kPixelsPerTriangle
 // px of its rectangle when it has any (the one-thread rates of 8-px and 200000-px triangles of
-// the Shading/ benchmark, docs/DESIGN.md "Threads", put a small triangle at about 500 to 700 px
+// the Shading/ benchmark, docs/design/threads.md, put a small triangle at about 500 to 700 px
 // of a large one's pixels).
 constexpr std::size_t kPixelsPerTriangle = 512;
 std::size_t task_load(const ShadeTask& task, std::span<const ListRef> refs) {
@@ -229,7 +229,7 @@ void split_crowded_bins(DrawCall& call, const BinLists& lists,
 
 // The shading phase's tasks into `plan`: every bin, except that crowded bins (a mesh in the middle
 // of the screen) are cut into sub-bins, so that no task holds far more than its share of the
-// triangles and every thread has work to the end (docs/DESIGN.md, "Threads"). Each tile lies in
+// triangles and every thread has work to the end (docs/design/threads.md). Each tile lies in
 // exactly one task's rectangle, and a task's lists are in submission order. The costliest tasks
 // come first, so that the last to start are short ones.
 void plan_shading(ShadePlan& plan, DrawCall& call, const BinGrid& grid, const BinLists& lists,

@@ -1,4 +1,4 @@
-// draw()'s shading in screen bins on several threads (docs/DESIGN.md, "Threads"), and the shading
+// draw()'s shading in screen bins on several threads (docs/design/threads.md), and the shading
 // batch that both paths hand to the kernels.
 #pragma once
 

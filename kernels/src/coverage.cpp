@@ -1,5 +1,5 @@
 // Public raster entry points: argument checks, then the chosen ISA's kernels; count_coverage()
-// in screen bins on several threads when asked (docs/DESIGN.md, "Threads").
+// in screen bins on several threads when asked (docs/design/threads.md).
 #include "edgewise/coverage.hpp"
 #include "edgewise/pixel_area.hpp"
 

@@ -1,7 +1,7 @@
 // draw()'s stages, each a function of its own, for the project's tools and benchmarks that time
 // them apart: draw() is exactly prepare_draw(), then (for a call with work) map_to_screen() and
 // shade_screen_mesh(), or, for a binned() call, draw_in_ranges() or draw_indexed_in_ranges(),
-// which run the vertex stage in ranges too (docs/DESIGN.md, "Threads").
+// which run the vertex stage in ranges too (docs/design/threads.md).
 #pragma once
 
 #include "edgewise/draw.hpp"

@@ -12,9 +12,9 @@ namespace edgewise {
 inline constexpr double kMinClipW = 0x1.0p-32;
 inline constexpr double kMaxClipW = 0x1.0p+32;
 
-// A triangle as the interpolators take it: snapped screen positions in pixels (docs/DESIGN.md,
-// "Coordinates and snapping") and each vertex's clip-space w. w = 1 at all three vertices means
-// no perspective.
+// A triangle as the interpolators take it: snapped screen positions in pixels
+// (docs/design/rasterization.md, "Coordinates and snapping") and each vertex's clip-space w. w = 1
+// at all three vertices means no perspective.
 struct ScreenTriangle {
   double x[3];
   double y[3];

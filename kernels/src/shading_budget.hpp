@@ -1,7 +1,7 @@
 // The choices draw() makes under DrawOptions::error_budget (draw.hpp), and the bounds behind
 // them. One scalar double function per choice, called by every ISA's shading kernel and by the
 // scalar reference with the same inputs, so both make the same choices and write the same
-// colours where they choose (docs/DESIGN.md, "Error budget").
+// colours where they choose (docs/design/error-budget.md).
 //
 // The exact colour of a pixel is clamp(shade(p) * texel(p)) per channel, written as
 // round(255 v). The choices replace it by one colour C for a whole triangle, or for the pixels a

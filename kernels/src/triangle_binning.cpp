@@ -51,7 +51,7 @@ PixelRect BinGrid::rect(std::size_t bin) const {
 TriangleStatus classify_triangle(const Vec2 vertices[3], CullMode cull, const PixelRect& clip,
                                  PixelRect& box, std::int32_t sample_reach) {
   // setup_triangles' decisions, one triangle at a time, in its exact arithmetic, without a
-  // library call (this runs once per triangle of a binned call; see docs/DESIGN.md, "Threads").
+  // library call (this runs once per triangle of a binned call; see docs/design/threads.md).
   // Scaling by 256 is exact in double, and |scaled| <= 2^23 fails for NaN and infinity.
   constexpr double kBand = static_cast<double>(kGuardBand << kSubpixelBits);
   double scaled[6];

@@ -1,4 +1,4 @@
-// Sort-middle binning (docs/DESIGN.md, "Threads"): the clip rectangle cut into screen bins, each
+// Sort-middle binning (docs/design/threads.md): the clip rectangle cut into screen bins, each
 // triangle's status decided once, and its corner indices appended to the lists of the bins its
 // box overlaps, one set of lists per range of triangles.
 #pragma once
@@ -23,7 +23,7 @@ struct BinGrid {
   std::int32_t first_column = 0, first_row = 0, columns = 0, rows = 0;
 
   // The largest bins of kBinSizes that still give every thread kBinsPerThread of them (the
-  // smallest when none does); measured in docs/DESIGN.md, "Threads". For a multisampled target
+  // smallest when none does); measured in docs/design/threads.md. For a multisampled target
   // (`samples` > 1), also no larger than keeps a bin's colour and depth within
   // kMultisampleBinBytes, so that a bin's samples stay in the core's cache while it is drawn.
   BinGrid(const PixelRect& clip_rect, std::size_t threads, int samples = 1);
@@ -55,7 +55,7 @@ TriangleStatus classify_triangle(const Vec2 vertices[3], CullMode cull, const Pi
 
 // The corner indices of one bin's triangles from one range, three per triangle, as
 // TriangleBatch::indices takes them. Appending is one capacity check per triangle (binning runs
-// once per triangle; see docs/DESIGN.md, "Threads"); the storage is kept when emptied.
+// once per triangle; see docs/design/threads.md); the storage is kept when emptied.
 class CornerList {
  public:
   void append(const std::uint32_t corner[3]) {

@@ -1,7 +1,7 @@
-// draw()'s vertex stage, the parts every ISA and the reference share (docs/DESIGN.md, "The vertex
-// stage"): the call's inputs, the start of the screen mesh, the snapping of one coordinate, and
-// the scalar handling of one triangle, clipping included. Each ISA maps the mesh's vertices its
-// own way (kernels/generic/vertex_stage-inl.hpp; the reference's plain loops in
+// draw()'s vertex stage, the parts every ISA and the reference share (docs/design/vertex-stage.md,
+// "The vertex stage"): the call's inputs, the start of the screen mesh, the snapping of one
+// coordinate, and the scalar handling of one triangle, clipping included. Each ISA maps the mesh's
+// vertices its own way (kernels/generic/vertex_stage-inl.hpp; the reference's plain loops in
 // kernels/reference/vertex_stage_reference.cpp) and hands here every triangle it does not
 // pass through as it is.
 #pragma once
@@ -29,8 +29,8 @@ struct VertexStageCall {
 };
 
 // Rounds a screen coordinate to the 1/256 px grid, ties to even, as the rasterizer does
-// (docs/DESIGN.md, "Coordinates and snapping"). Values beyond 2^43 in magnitude and non-finite
-// ones pass through unchanged. Every vertex the shading kernels see has been snapped so.
+// (docs/design/rasterization.md, "Coordinates and snapping"). Values beyond 2^43 in magnitude and
+// non-finite ones pass through unchanged. Every vertex the shading kernels see has been snapped so.
 float snap(float v);
 
 // The vertex stage of a draw() call on `target` (its viewport and guard band).

@@ -4,7 +4,7 @@
 // Conventions:
 // - World space is right-handed with y up. A triangle's front face is counter-clockwise seen from
 //   the side its normal points to, so cross(p1 - p0, p2 - p0) points out of a closed surface.
-// - Texture coordinates follow docs/DESIGN.md, "Textures": s to the right, t down (row 0 of the
+// - Texture coordinates follow docs/design/textures.md: s to the right, t down (row 0 of the
 //   image at t = 0).
 //   They may leave [0, 1) where a texture is meant to repeat.
 // - Colours are linear RGBA in [0, 1].

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every file the documentation names or links exists, every link's anchor is a heading of the
-# page it names, and every section of docs/DESIGN.md the code cites is a heading there, so that
-# from a document or a comment the next file is one hop away.
+# page it names, and every chapter of the design document (docs/design/) the code cites exists
+# with the section it names, so that from a document or a comment the next file is one hop away.
 #
 #   references_exist.sh REPOSITORY_ROOT
 #
@@ -9,8 +9,9 @@
 # ends in a source, script or document extension. It resolves as a path from the repository
 # root or the document's folder, as an include path (`edgewise/draw.hpp`), or as the tail of a
 # source file's path: of exactly one when it names a folder (`isa/draw.cpp`), of at least one
-# when it is a bare name (`summary.txt`, one per results folder). A section citation is
-# `docs/DESIGN.md, "Heading"` in any source file of kernels/, tests/, bench/, tools/ or testing/.
+# when it is a bare name (`summary.txt`, one per results folder). A citation is
+# `docs/design/CHAPTER.md`, or `docs/design/CHAPTER.md, "Heading"`, in any source file of
+# kernels/, tests/, bench/, tools/ or testing/.
 # shellcheck disable=SC2016 # the backticks are Markdown's, matched literally
 set -euo pipefail
 
@@ -68,12 +69,25 @@ for document in "${documents[@]}"; do
   done < <(grep -oE '\]\([^)[:space:]]+\)' "$document" | sed -E 's/^\]\((.*)\)$/\1/' | sort -u)
 done
 
-headings=$(grep -E '^##+ ' docs/DESIGN.md | sed -E 's/^#+ //')
+# The design document's chapters the code cites, and the sections it names in them:
+# `docs/design/threads.md`, `docs/design/rasterization.md, "Tiles and masks"`.
 while IFS= read -r citation; do
+  chapter=${citation%%.md*}.md
+  if [[ ! -f $chapter ]]; then
+    fail "code cites $chapter, which does not exist"
+    continue
+  fi
+  [[ $citation == *\"* ]] || continue
   section=${citation#*\"}
   section=${section%\"}
-  grep -qxF "$section" <<<"$headings" || fail "code cites docs/DESIGN.md section \"$section\", which is not a heading"
-done < <(grep -rhoE --exclude=references_exist.sh 'docs/DESIGN\.md, "[^"]+"' kernels tests bench tools \
+  grep -E '^#+ ' "$chapter" | sed -E 's/^#+ //' | grep -qxF "$section" ||
+    fail "code cites $chapter, \"$section\", which is not a heading there"
+done < <(grep -rhoE --exclude=references_exist.sh 'docs/design/[A-Za-z0-9_-]+\.md(,? "[^"]+")?' \
+  kernels tests bench tools testing | sort -u)
+# Sections are cited in their chapter, not in the index.
+while IFS= read -r citation; do
+  fail "code cites $citation: sections live in the chapters under docs/design/"
+done < <(grep -rhoE --exclude=references_exist.sh 'docs/DESIGN\.md,? "[^"]+"' kernels tests bench tools \
   testing | sort -u)
 
 if ((failures > 0)); then

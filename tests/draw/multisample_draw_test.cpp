@@ -1,4 +1,4 @@
-// draw() into multisampled targets (framebuffer.hpp, docs/DESIGN.md "Anti-aliasing"): every ISA
+// draw() into multisampled targets (framebuffer.hpp, docs/design/anti-aliasing.md): every ISA
 // against the scalar reference. Per-sample coverage, depth-test outcomes and depth values must be
 // identical (the shared depth formula at each sample's position); each pixel is shaded once, so
 // the samples a triangle writes in a pixel hold one colour, within the 1x colour bound of

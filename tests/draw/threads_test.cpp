@@ -1,4 +1,4 @@
-// draw() on several threads (docs/DESIGN.md, "Threads"): for 1, 2, 3 and 8 threads, on every ISA,
+// draw() on several threads (docs/design/threads.md): for 1, 2, 3 and 8 threads, on every ISA,
 // the framebuffer (colour and depth, bit for bit) and every count of the report are those of one
 // thread, on scenes with overlapping triangles, equal depths, clipping, culling, a scissor,
 // hierarchical depth and textures; a caller's executor gives the same image; EDGEWISE_THREADS.

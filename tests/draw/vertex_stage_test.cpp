@@ -1,4 +1,5 @@
-// draw()'s vertex stage (kernels/src/vertex_stage.hpp, docs/DESIGN.md "The vertex stage"):
+// draw()'s vertex stage (kernels/src/vertex_stage.hpp, docs/design/vertex-stage.md "The vertex
+// stage"):
 // - every ISA's kernel gives the reference's screen mesh bit for bit: positions, depth, w,
 //   attributes, indices and report, on random meshes that cross the near, far and guard-band
 //   planes, put vertices near w = 0, hold NaN, infinite and huge coordinates and bad indices,

@@ -1,5 +1,5 @@
 // 4x multisampled coverage against an independent rasterizer, Mesa's llvmpipe, through OpenGL
-// (docs/DESIGN.md, "Anti-aliasing"): the same triangles (sample_edge_triangles.hpp), each in a
+// (docs/design/anti-aliasing.md): the same triangles (sample_edge_triangles.hpp), each in a
 // colour of its own, drawn in order without depth test by both, must leave every sample of every
 // pixel with the same triangle, on every ISA. Many samples lie exactly on edges, where only the
 // fill rule decides (tie_rules.hpp counts them).

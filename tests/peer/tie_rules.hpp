@@ -1,8 +1,8 @@
 // Which triangle each sample ends up with, decided exactly (64-bit integer edge functions on the
 // 1/256 px grid) under each of the four fill rules that differ only for samples exactly on an
-// edge: top-left (edgewise's, docs/DESIGN.md "Fill rule and watertightness") and its mirror
-// images. Samples whose triangle differs between the rules are the ones the fill rule decides, so
-// a comparison that agrees on all of them has checked the rule.
+// edge: top-left (edgewise's, docs/design/rasterization.md "Fill rule and watertightness") and its
+// mirror images. Samples whose triangle differs between the rules are the ones the fill rule
+// decides, so a comparison that agrees on all of them has checked the rule.
 #pragma once
 
 #include <array>

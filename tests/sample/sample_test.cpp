@@ -248,7 +248,7 @@ TEST_P(SampleDifferential, BadQueriesGiveTheirDefinedResults) {
 }
 
 // 8-bit taps load a tap row's two texels together where no lane of the batch wraps between them,
-// one by one otherwise (docs/DESIGN.md, "Textures"), and both must give the same bits: queries
+// one by one otherwise (docs/design/textures.md), and both must give the same bits: queries
 // inside the texture with small footprints (levels at least 8 texels wide, where no tap wraps)
 // are sampled, then again with the first query moved to where its tap rows wrap or clamp, which
 // sends its whole batch down the other path. Every other query's result must stay the same.

@@ -2,7 +2,8 @@
 // centres decided by the edge function E = A x + B y + C of each edge (A, B, C from the snapped
 // vertices), evaluated at every centre of the box in one arithmetic:
 //   fixed_point  64-bit integers in 1/256 px, which is exact: the library's rule
-//                (docs/DESIGN.md, "Fill rule and watertightness"), written as plainly as the others
+//                (docs/design/rasterization.md, "Fill rule and watertightness"), written as plainly
+//                as the others
 //   float64      double
 //   float32      float
 // The top-left rule decides E == 0 in each: inside is E > 0 once the winding is made positive,

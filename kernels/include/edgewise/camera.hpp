@@ -6,9 +6,10 @@
 // - View space is right-handed: the camera sits at the origin looking down -z, y up, x right.
 // - Clip space follows D3D: a point is visible when -w <= x <= w, -w <= y <= w and 0 <= z <= w.
 //   perspective() and orthographic() map the near plane to z = 0 and the far plane to z = w.
-// - Screen space follows docs/DESIGN.md, "Coordinates and snapping": origin at the top-left
-//   corner, y down, pixel (i, j) sampled at (i + 0.5, j + 0.5). NDC (x/w, y/w) = (-1, 1) lands on
-//   the top-left corner (0, 0) and (1, -1) on the bottom-right corner (width, height).
+// - Screen space follows docs/design/rasterization.md, "Coordinates and snapping": origin at the
+//   top-left corner, y down, pixel (i, j) sampled at (i + 0.5, j + 0.5). NDC (x/w, y/w) =
+//   (-1, 1) lands on the top-left corner (0, 0) and (1, -1) on the bottom-right corner (width,
+//   height).
 //
 // Thread safety: plain functions of their arguments; call them from any thread.
 #pragma once

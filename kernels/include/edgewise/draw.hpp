@@ -1,9 +1,9 @@
 // Drawing shaded, depth-tested triangle meshes into a Framebuffer.
 //
 // The pipeline: vertices are transformed to clip space (camera.hpp), triangles are clipped
-// (docs/DESIGN.md, "Clipping") and mapped to the screen, snapped to 1/256 px like every coverage
-// decision, culled by winding, rasterized with the exact coverage of coverage.hpp, depth-tested,
-// shaded, written.
+// (docs/design/vertex-stage.md, "Clipping") and mapped to the screen, snapped to 1/256 px like
+// every coverage decision, culled by winding, rasterized with the exact coverage of coverage.hpp,
+// depth-tested, shaded, written.
 //
 // Depth is z/w, interpolated linearly in screen space in float32 by one fixed formula (see
 // kernels/src/depth_plane.hpp), so depth-test outcomes are identical on every ISA and in the
@@ -104,9 +104,9 @@ struct DrawOptions {
   // triangle by one colour, and a textured triangle's filtered texels by one colour per 8x8
   // tile (nearest, bilinear, mip_nearest and trilinear filters), wherever a bound derived from
   // the triangle's vertices, the texture's ranges and the float32 rounding of the exact path
-  // shows the written 8-bit codes to differ by at most floor(255 budget) (docs/DESIGN.md, "Error
-  // budget"); a budget within 2^-20 of k/255 counts as k codes. Multisampled targets are drawn
-  // exactly. Throws for a negative or NaN budget.
+  // shows the written 8-bit codes to differ by at most floor(255 budget)
+  // (docs/design/error-budget.md); a budget within 2^-20 of k/255 counts as k codes. Multisampled
+  // targets are drawn exactly. Throws for a negative or NaN budget.
   std::optional<float> error_budget;
   // Skip 8x8 tiles whose stored depth the triangle cannot pass anywhere (less and less_equal
   // tests), from a per-tile depth bound the framebuffer keeps. Outcomes are the same either way.

@@ -1,6 +1,6 @@
 // Sample positions for multisampling: the standard patterns of Direct3D 11 (also Vulkan's
-// standard sample locations) for 1, 2, 4, 8 and 16 samples per pixel (docs/DESIGN.md,
-// "Anti-aliasing").
+// standard sample locations) for 1, 2, 4, 8 and 16 samples per pixel
+// (docs/design/anti-aliasing.md).
 //
 // Offsets are from the pixel centre in 1/16 px, y down. Sample k of a pixel is bit k of the
 // pixel's sample mask. Every offset lies on the 1/256 px snapping grid, so each sample is

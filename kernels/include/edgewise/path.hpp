@@ -1,4 +1,4 @@
-// 2D paths and their strokes (docs/DESIGN.md, "Anti-aliasing"): polylines and quadratic Bezier
+// 2D paths and their strokes (docs/design/anti-aliasing.md): polylines and quadratic Bezier
 // curves in pixel coordinates (x right, y down, the screen's frame of coverage.hpp), flattened to
 // a stated tolerance, stroked to triangles with caps and joins, and painted into a Framebuffer
 // through draw(): anti-aliased by the target's samples (multisampling) and resolve().

@@ -1,7 +1,7 @@
 // Exact-area coverage: for each pixel, how much of its square [i, i + 1) x [j, j + 1) a snapped
 // triangle covers, in square pixels. It is the ground truth of every anti-aliasing mode, and a
 // rendering mode of its own for shapes whose triangles do not overlap or share pixels (coverage-
-// weighted blending); docs/DESIGN.md, "Anti-aliasing", says where it is wrong (conflation at
+// weighted blending); docs/design/anti-aliasing.md, says where it is wrong (conflation at
 // shared edges).
 //
 // Accuracy: every ISA's area lies within kPixelAreaTolerance of the exact area of the pixel's

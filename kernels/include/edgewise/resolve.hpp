@@ -1,7 +1,7 @@
-// Resolving a multisampled or supersampled target to its anti-aliased image (docs/DESIGN.md,
-// "Anti-aliasing"): each output pixel is the weighted mean of the samples around its centre,
-// taken in linear light (the framebuffer's values are linear, framebuffer.hpp), under one of
-// three reconstruction filters, and encoded as linear or sRGB 8-bit values.
+// Resolving a multisampled or supersampled target to its anti-aliased image
+// (docs/design/anti-aliasing.md): each output pixel is the weighted mean of the samples around its
+// centre, taken in linear light (the framebuffer's values are linear, framebuffer.hpp), under one
+// of three reconstruction filters, and encoded as linear or sRGB 8-bit values.
 //
 // Sample positions: sample k of source pixel (X, Y) lies at its centre moved by the pattern's
 // offset (multisample.hpp), and with supersampling factor f the source is f times the output

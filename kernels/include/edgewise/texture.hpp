@@ -1,6 +1,6 @@
 // Textures: level 0 and the pyramids built from it (mipmaps, ripmaps, a summed-area table).
 //
-// Conventions (docs/DESIGN.md, "Textures"): texture coordinates (s, t) cover [0, 1) over the
+// Conventions (docs/design/textures.md): texture coordinates (s, t) cover [0, 1) over the
 // image, s to the right, t down; texel (a, b) of a W x H level is centered at
 // ((a + 0.5) / W, (b + 0.5) / H).
 // Texels are RGBA, row-major, row 0 first. 8-bit texels are linear values v / 255, or sRGB-encoded

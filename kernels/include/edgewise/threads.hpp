@@ -1,7 +1,7 @@
 // How many threads draw(), count_coverage() and resolve() use, and who runs them.
 //
 // A call with more than one thread sorts its triangles into screen bins and rasterizes each bin
-// on one thread (docs/DESIGN.md, "Threads"). Its results (framebuffer, counts, statuses) are
+// on one thread (docs/design/threads.md). Its results (framebuffer, counts, statuses) are
 // identical bit for bit to those of one thread, whatever the thread count and the executor.
 #pragma once
 
