@@ -1,7 +1,7 @@
 #!/bin/sh
 # plot_rejects_bad_input.sh PLOT_ATLAS DIR: tools/atlas/plot_atlas.py exits with status 1 and
-# names the problem for a folder with no study, and for a study whose CSV has no points for one
-# of its charts.
+# names the problem for a folder with no study, for a study whose CSV has no points for one of its
+# charts, a bad header, or a row without its point's label.
 set -u
 plot=$1 dir=$2
 rm -rf "$dir" && mkdir -p "$dir" || exit 1
@@ -27,4 +27,6 @@ printf 'chart,series,x,y\nb,s,1,2\n' >"$dir/s.csv"
 expect "s.csv: no points for chart a"
 printf 'chart,series,x\n' >"$dir/s.csv"
 expect "s.csv:1: expected the header chart,series,x,y"
+printf 'chart,series,x,y,label\na,s,1,2\n' >"$dir/s.csv"
+expect "s.csv:2: 4 fields, expected 5"
 echo "plot_atlas.py rejects bad input"

@@ -32,7 +32,7 @@ StudyOutput aa_study(const StudySettings& settings, const std::string& cpu) {
                             "aa/" + aa_mode_name(m) + "/" + std::string(name_of(isa)),
                             [&] { coverage_image(triangles, m, isa); }, settings.timer) /
                         static_cast<double>(count);
-      out.add(kPareto, aa_mode_name(m), ns, errors.edge[m].mean());
+      out.add(kPareto, aa_mode_name(m), ns, errors.edge[m].mean(), std::string(name_of(isa)));
       if (isa == active_isa() && kAaSamples[m] == 0) exact_ns = ns;
       if (isa == active_isa() && kAaSamples[m] == 4) four_ns = ns;
     }

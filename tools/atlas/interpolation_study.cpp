@@ -180,7 +180,8 @@ void interpolation_pareto(const StudySettings& settings, StudyOutput& out) {
               "interpolation/" + label(method, perspective) + "/" + std::string(name_of(isa)),
               [&] { draw(target, mesh, options); }, settings.timer) /
           static_cast<double>(std::max<std::uint64_t>(report.fragments, 1));
-      out.add(kInterpolationPareto, label(method, perspective), ns, error.rmse());
+      out.add(kInterpolationPareto, label(method, perspective), ns, error.rmse(),
+              std::string(name_of(isa)));
       if (method == InterpolationMethod::plane_equations && perspective == Perspective::correct &&
           (best_name.empty() || ns < best_ns)) {
         best_name = std::string(name_of(isa));

@@ -2,7 +2,8 @@
 """Draw the method atlas: every study's charts (PNG and SVG) and one self-contained HTML page.
 
 Usage: /usr/bin/python3 tools/atlas/plot_atlas.py DIR [--summary]
-  DIR        the folder edgewise-atlas-study wrote: STUDY.csv (chart, series, x, y) and
+  DIR        the folder edgewise-atlas-study wrote: STUDY.csv (chart, series, x, y and, where
+             a series has several points, a label for each, its ISA) and
              STUDY.json (the study's title, the CPU, and per chart its title, axes, scales, kind
              and a line of reading) for each study
   --summary  also print, per chart, its title and reading (tools/edgewise-atlas prints them)
@@ -23,6 +24,7 @@ import os
 import sys
 
 CSV_HEADER = ["chart", "series", "x", "y"]
+LABELLED_HEADER = CSV_HEADER + ["label"]
 CHART_KEYS = {"id", "title", "x_label", "y_label", "x_log", "y_log", "kind", "reading"}
 MARKERS = ["o", "s", "^", "v", "D", "x", "P", "*"]
 
@@ -59,17 +61,21 @@ def read_study(directory, json_name):
     try:
         with open(csv_path, newline="") as file:
             reader = csv.reader(file)
-            if next(reader, None) != CSV_HEADER:
-                raise InputError(f"{csv_path}:1: expected the header {','.join(CSV_HEADER)}")
+            header = next(reader, None)
+            if header not in (CSV_HEADER, LABELLED_HEADER):
+                raise InputError(f"{csv_path}:1: expected the header {','.join(CSV_HEADER)}"
+                                 f" or {','.join(LABELLED_HEADER)}")
             for number, fields in enumerate(reader, start=2):
-                if len(fields) != len(CSV_HEADER):
-                    raise InputError(f"{csv_path}:{number}: {len(fields)} fields, expected 4")
-                chart, series, x, y = fields
+                if len(fields) != len(header):
+                    raise InputError(
+                        f"{csv_path}:{number}: {len(fields)} fields, expected {len(header)}")
+                chart, series, x, y = fields[:4]
+                label = fields[4] if len(fields) > 4 else ""
                 try:
                     y = float(y)
                 except ValueError:
                     raise InputError(f"{csv_path}:{number}: y is not a number") from None
-                points.setdefault(chart, {}).setdefault(series, []).append((x, y))
+                points.setdefault(chart, {}).setdefault(series, []).append((x, y, label))
     except OSError as error:
         raise InputError(f"{csv_path}: {error}") from None
     for chart in study["charts"]:
@@ -94,35 +100,30 @@ def scale_y(axis, chart, values):
 
 def draw_chart(plt, study, chart, series, path_stem):
     figure, axis = plt.subplots(figsize=(7.5, 4.6))
-    values = [y for points in series.values() for _, y in points]
+    values = [y for points in series.values() for _, y, _ in points]
     kind = chart["kind"]
     if kind == "images":
         plt.close(figure)
         draw_images(plt, study, chart, series, path_stem)
         return
     if kind == "bar":
-        labels = [x for points in series.values() for x, _ in points]
-        heights = [y for points in series.values() for _, y in points]
+        labels = [x for points in series.values() for x, _, _ in points]
+        heights = [y for points in series.values() for _, y, _ in points]
         bars = axis.bar(range(len(labels)), heights, color="#4477aa")
         axis.set_xticks(range(len(labels)), labels, rotation=30, ha="right", fontsize=8)
         axis.bar_label(bars, fmt="%.3g", fontsize=7)
+    elif kind == "scatter":
+        draw_scatter(plt, figure, axis, series)
     else:
         # Twenty colours, and markers cycling apart from them, tell up to twenty series apart.
-        colours = plt.get_cmap("tab20").colors if len(series) > 10 else plt.get_cmap("tab10").colors
+        colours = series_colours(plt, len(series))
         for index, (name, points) in enumerate(series.items()):
-            xs = [float(x) for x, _ in points]
-            ys = [y for _, y in points]
-            style = {"marker": MARKERS[index % len(MARKERS)], "color": colours[index % len(colours)],
-                     "label": name, "clip_on": False}
-            if kind == "scatter":
-                axis.scatter(xs, ys, zorder=3, **style)
-            else:
-                axis.plot(xs, ys, **style)
-        if len(series) > 6:  # beside the axes, where it hides no point
-            figure.set_size_inches(10.5, 4.6)
-            axis.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-        else:
-            axis.legend(fontsize=8)
+            xs = [float(x) for x, _, _ in points]
+            ys = [y for _, y, _ in points]
+            axis.plot(xs, ys, marker=MARKERS[index % len(MARKERS)],
+                      color=colours[index % len(colours)], label=name, clip_on=False)
+        place_legend(figure, axis, len(series))
+    if kind in ("line", "scatter"):
         if chart["x_log"]:
             axis.set_xscale("log", base=2 if kind == "line" else 10)
     scale_y(axis, chart, values)
@@ -135,6 +136,68 @@ def draw_chart(plt, study, chart, series, path_stem):
     for extension in ("png", "svg"):
         figure.savefig(f"{path_stem}.{extension}", dpi=110)
     plt.close(figure)
+
+
+def series_colours(plt, count):
+    return plt.get_cmap("tab20").colors if count > 10 else plt.get_cmap("tab10").colors
+
+
+def place_legend(figure, axis, entries, **options):
+    if entries > 6:  # beside the axes, where it hides no point
+        figure.set_size_inches(10.5, 4.6)
+        return axis.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), **options)
+    return axis.legend(fontsize=8, **options)
+
+
+def pareto_front(points):
+    """The points no other point beats on both axes (lower is better on each), by x."""
+    front = []
+    for x, y in sorted(points, key=lambda p: (p[0], p[1])):
+        if not front or y < front[-1][1]:
+            front.append((x, y))
+    return front
+
+
+def draw_scatter(plt, figure, axis, series):
+    """Error against time: a colour per series (a method), a marker per point label (the ISA
+    it ran on), and the Pareto front, the methods that nothing beats on both time and error."""
+    from matplotlib.lines import Line2D
+
+    colours = series_colours(plt, len(series))
+    labels = []
+    for points in series.values():
+        for _, _, label in points:
+            if label and label not in labels:
+                labels.append(label)
+    marker_of = {label: MARKERS[i % len(MARKERS)] for i, label in enumerate(labels)}
+    method_handles = []
+    for index, (name, points) in enumerate(series.items()):
+        colour = colours[index % len(colours)]
+        # A series of one unlabelled point (a peer's) is a star; without labels, markers cycle.
+        unlabelled = "*" if labels else MARKERS[index % len(MARKERS)]
+        labelled = any(label for _, _, label in points)
+        for x, y, label in points:
+            axis.scatter([float(x)], [y], color=colour, marker=marker_of.get(label, unlabelled),
+                         zorder=3, clip_on=False)
+        method_handles.append(Line2D([], [], color=colour, marker="s" if labelled else unlabelled,
+                                     linestyle="", label=name))
+    front = pareto_front([(float(x), y) for points in series.values() for x, y, _ in points])
+    axis.plot([x for x, _ in front], [y for _, y in front], drawstyle="steps-post",
+              color="#222222", linewidth=1.0, alpha=0.7, zorder=2)
+    # Rings mark the front's points, so that a front of one point shows too.
+    axis.scatter([x for x, _ in front], [y for _, y in front], s=130, facecolors="none",
+                 edgecolors="#222222", linewidths=1.0, zorder=4, clip_on=False)
+    front_handle = Line2D([], [], color="#222222", linewidth=1.0, alpha=0.7, marker="o",
+                          markersize=9, markerfacecolor="none", label="Pareto front")
+    # One legend beside the axes, so that the lower left, where the best points lie, stays clear:
+    # the methods' colours, the front, then the ISAs' markers.
+    isa_handles = [Line2D([], [], color="#555555", marker=marker_of[label], linestyle="",
+                          label=f"on {label}") for label in labels]
+    handles = method_handles + [front_handle] + isa_handles
+    columns = 1 if len(handles) <= 16 else 2
+    figure.set_size_inches(10.5 + 2.5 * (columns - 1), 4.6)
+    axis.legend(handles=handles, fontsize=8, ncol=columns, loc="upper left",
+                bbox_to_anchor=(1.01, 1.0))
 
 
 def draw_images(plt, study, chart, series, path_stem):

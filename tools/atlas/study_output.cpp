@@ -69,21 +69,26 @@ void StudyOutput::set_reading(const std::string& chart, std::string reading) {
 }
 
 void StudyOutput::add(const std::string& chart, const std::string& series, double x, double y) {
-  points_.push_back({chart, series, exact_decimal(x), y});
+  points_.push_back({chart, series, exact_decimal(x), y, ""});
+}
+
+void StudyOutput::add(const std::string& chart, const std::string& series, double x, double y,
+                      const std::string& label) {
+  points_.push_back({chart, series, exact_decimal(x), y, label});
 }
 
 void StudyOutput::add(const std::string& chart, const std::string& series,
                       const std::string& category, double y) {
-  points_.push_back({chart, series, category, y});
+  points_.push_back({chart, series, category, y, ""});
 }
 
 void StudyOutput::write(const std::filesystem::path& dir) const {
   const std::filesystem::path csv_path = dir / (study_ + ".csv");
   tools::OutputStream csv(csv_path.string());
-  csv << "chart,series,x,y\n";
+  csv << "chart,series,x,y,label\n";
   for (const Point& p : points_) {
     csv << csv_field(p.chart) << ',' << csv_field(p.series) << ',' << csv_field(p.x) << ','
-        << exact_decimal(p.y) << '\n';
+        << exact_decimal(p.y) << ',' << csv_field(p.label) << '\n';
   }
   csv.finish();
 

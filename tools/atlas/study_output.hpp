@@ -1,7 +1,7 @@
 // What a study of the method atlas writes (tools/edgewise-atlas): its numbers as a CSV, one row
-// per point (chart, series, x, y), and its charts' descriptions as JSON (titles, axes, scales,
-// a line of reading each, the CPU), from which tools/atlas/plot_atlas.py draws the charts and
-// the page.
+// per point (chart, series, x, y, label), and its charts' descriptions as JSON (titles, axes,
+// scales, a line of reading each, the CPU), from which tools/atlas/plot_atlas.py draws the charts
+// and the page.
 #pragma once
 
 #include <filesystem>
@@ -26,6 +26,7 @@ struct Point {
   std::string chart, series;
   std::string x;  // a number, or a category for bar charts
   double y = 0.0;
+  std::string label;  // what tells the series' points apart (its ISA), or empty
 };
 
 class StudyOutput {
@@ -35,6 +36,9 @@ class StudyOutput {
   // Sets the reading line of a chart added before (found by id); throws std::logic_error if none.
   void set_reading(const std::string& chart, std::string reading);
   void add(const std::string& chart, const std::string& series, double x, double y);
+  // A point of a scatter chart whose series has several: `label` says which one it is.
+  void add(const std::string& chart, const std::string& series, double x, double y,
+           const std::string& label);
   void add(const std::string& chart, const std::string& series, const std::string& category,
            double y);
   // Writes <dir>/<study>.csv and <dir>/<study>.json; throws std::runtime_error naming the file

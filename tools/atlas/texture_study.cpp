@@ -66,7 +66,7 @@ void texture_pareto(const StudySettings& settings, StudyOutput& out) {
                                          },
                                          settings.timer);
       const double rmse = rmse_of(colours, truth.truth.image);
-      out.add(kTexturePareto, method.name, ns, rmse);
+      out.add(kTexturePareto, method.name, ns, rmse, std::string(name_of(isa)));
       if (method.name == "trilinear") {
         trilinear = rmse;
         fastest_trilinear = std::min(fastest_trilinear, ns);
