@@ -141,8 +141,8 @@ class ShadingVisitor {
   }
 
   // Starts fetching what run_batch() and begin_group() will read of the vertices `corners`
-  // (an index past the end fetches the last vertex). A plain loop: GCC 12 dropped the
-  // prefetches of a generic lambda that took each array in turn.
+  // (an index past the end fetches the last vertex). A plain loop: the compiler may drop the
+  // prefetches of a generic lambda that takes each array in turn.
   [[gnu::always_inline]] void prefetch_vertices(const std::uint32_t* corners,
                                                 std::size_t count) const {
     const std::size_t vertices = batch_.coverage.vertex_count;

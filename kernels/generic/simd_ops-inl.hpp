@@ -141,7 +141,7 @@ inline float lane_max(xsimd::batch<float, Arch> v) {
 }
 
 // The lanes of a float comparison as int32 lanes, all ones where it holds: the register itself.
-// (Selecting a constant by the mask with xsimd::select() costs GCC 12 one more compare.)
+// (Selecting a constant by the mask with xsimd::select() can cost one more compare.)
 template <class Arch>
 [[gnu::always_inline]] inline xsimd::batch<std::int32_t, Arch> mask_lanes(
     xsimd::batch_bool<float, Arch> mask) {

@@ -32,14 +32,11 @@ struct LevelLanes {
   xsimd::batch<float, Arch> widthf, heightf;
 };
 
-// base[index] per lane by one load per lane, for texels: on AMD Zen 3 the AVX2 gather
-// instruction is slower than eight loads there (bilinear on the ground-plane stream: 34 M/s with
-// gathers, 78 M/s with loads), while it wins on small, hot tables (the EWA weights: 26 M/s
-// against 18 M/s on the magnification stream), which keep gather_*(). On AMD Zen 5 too (the
-// trilinear ground plane drawn: 92 M px/s with loads, 77 M px/s with gathers; texel pairs,
-// texel_pairs-inl.hpp: 108 M px/s with 64-bit loads, 86 M px/s with 64-bit gathers, measured
-// in one run each, one core). The lanes are built from their values at once (vmovd and vpinsrd
-// on x86), not inserted one by one into the whole register as xsimd's gather does.
+// base[index] per lane by one load per lane, for texels: the gather instruction is slower than
+// separate loads over a texture's scattered texels, and faster only on small, hot tables (the
+// EWA weights), which keep gather_*() (docs/design/textures.md has the figures). The lanes are
+// built from their values at once (vmovd and vpinsrd on x86), not inserted one by one into the
+// whole register as xsimd's gather does.
 template <class Arch, class T, std::size_t... Lane>
 EDGEWISE_INLINE xsimd::batch<T, Arch> load_lanes(const T* base, const std::int32_t* at,
                                                  std::index_sequence<Lane...>) {
@@ -96,8 +93,8 @@ EDGEWISE_INLINE xsimd::batch<float, Arch> gather_float(const float* base,
 }
 
 // table[index] per lane for an index below kLevelTableReadable: on AVX2 the table's 16 entries
-// are permuted in registers, two permutes and a blend (trilinear on the ground-plane stream:
-// 66 M/s with three gather instructions per level, 75 M/s with permutes).
+// are permuted in registers, two permutes and a blend, which is faster than a gather per table
+// and level (docs/design/textures.md).
 template <class Arch>
 EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> lookup_small_table(
     const std::int32_t* table, xsimd::batch<std::int32_t, Arch> index) {

@@ -17,21 +17,16 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 using Arch = RowArch<EDGEWISE_ARCH>;
 
-// Which walk a triangle takes when masks are wanted, measured with the coverage benchmark on
-// AMD Zen 3 while it still counted masks, and with the span walk's former double-precision
-// spans: the span walk overtook the per-tile walk once the clipped box held roughly 500 pixels
-// (triangles of about 150 px) on AVX2 and SSE4.1; on SSE2, which has no double rounding
-// instruction, it never did.
+// Which walk a triangle takes when masks are wanted: the span walk from the box area where it
+// overtakes the per-tile walk, never on SSE2, which has no double rounding instruction
+// (docs/design/rasterization.md, "Tiles and masks", says where the threshold was measured).
 inline constexpr std::int64_t kSpanWalkMinBoxArea =
     std::is_same_v<Arch, xsimd::sse2> ? INT64_MAX : 576;
 
-// A visitor that only counts (add_pixels) takes the span walk's counts above this extent. On
-// AMD EPYC family 26 model 2, AVX2: 8x8 boxes count faster by the block walk (411 instructions
-// per 8-px triangle against 743 by spans); 64-px triangles ran 4% faster (686 instructions per
-// triangle against 820) by spans than through the block walk of 16x16 boxes. SSE2, which
-// emulates the span walk's double floor and int32 multiplies and minima, counted 64-px
-// triangles 30% slower by spans, 1000-px ones 2.3x faster: there boxes under 576 pixels keep
-// the other walks.
+// A visitor that only counts (add_pixels) takes the span walk's counts above this extent: an 8x8
+// box counts faster by the block walk, which makes one mask, larger ones by the spans' lengths.
+// SSE2 emulates the span walk's double floor and int32 multiplies and minima, so there only
+// boxes of 576 pixels or more count by spans (docs/design/rasterization.md, "Tiles and masks").
 inline constexpr std::int32_t kCountSpansMinExtent = 8;
 inline constexpr std::int64_t kCountSpansMinBoxArea = std::is_same_v<Arch, xsimd::sse2> ? 576 : 0;
 
@@ -153,9 +148,9 @@ struct VisibleGroup {
 inline constexpr std::size_t kPrefetchGroups = 4;
 
 // Fetches, sets up and walks every triangle of the batch, a group of setup lanes at a time.
-// The walks (walk_block, walk_spans, walk_tiles) are kept out of line: with one visitor per
-// translation unit the compiler inlined them into this loop, which ran the coverage benchmark's
-// 8-px triangles 9% slower on AVX2 (AMD Zen 4) with fewer instructions.
+// The walks (walk_block, walk_spans, walk_tiles) are kept out of line: inlined into this loop
+// (the compiler's choice with one visitor per translation unit) they ran fewer instructions but
+// slower (docs/design/rasterization.md, "Tiles and masks").
 template <class Visitor>
 void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterReport& report) {
   constexpr std::size_t kLanes = kSetupLanes<Arch>;

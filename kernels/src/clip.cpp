@@ -106,8 +106,8 @@ bool any_out_of_range(const Vec4* const (&input)[3]) {
 }
 
 // Each vertex's distance to `plane` into d; whether any vertex is outside it. (d is a reference
-// to the array, as in the helpers below: with pointers, GCC 12 compiled clip_triangle() to 2%
-// more instructions.)
+// to the array, as in the helpers below, so that the compiler knows its extent and need not
+// reload it through a pointer that might alias.)
 bool distances_to_plane(const ClipVertex* in, int count, int plane, const GuardBandPlanes& planes,
                         float (&d)[kMaxClipVertices]) {
   bool any_outside = false;
