@@ -6,15 +6,15 @@
 // depth-tested, shaded, written.
 //
 // Depth is z/w, interpolated linearly in screen space in float32 by one fixed formula (see
-// kernels/src/depth_plane.hpp), so depth-test outcomes are identical on every ISA and in the
-// scalar reference. Colours and normals are interpolated by the chosen method, perspective-
-// correct by default, within the bounds derived in the kernels.
+// docs/design/depth-and-interpolation.md, "Depth"), so depth-test outcomes are identical on every
+// ISA and in the scalar reference. Colours and normals are interpolated by the chosen method,
+// perspective- correct by default, within the bounds derived in the kernels.
 //
 // Texturing (DrawOptions::texture): texture coordinates are interpolated by plane equations of
 // s/w, t/w and 1/w (of s and t under Perspective::affine), each pixel's (s, t) and derivatives go
 // to the sampler (sample.hpp) with the chosen filter, and the filtered texel multiplies the
 // shaded colour channel by channel (flat, Gouraud or diffuse, as without a texture). Coordinates
-// and derivatives come from one fixed float32 formula (kernels/src/texture_planes.hpp), so every
+// and derivatives come from one fixed float32 formula (docs/design/textures.md), so every
 // ISA and the scalar reference sample the texture at the same queries; the texture-coordinate
 // planes do not depend on the interpolation method, which applies to colours and normals.
 //
@@ -127,7 +127,7 @@ struct DrawOptions {
 // Tiny coordinates are no error in themselves: a triangle too small to cover 1/256 px (1e-40
 // under a camera whose clip-space w stays near 1) snaps to zero area and is culled. What is an
 // error is a clip-space coordinate that float32 cannot project: non-finite, beyond 2^64, or a w
-// in (0, 2^-125) at a vertex that clipping keeps (kernels/src/clip.hpp).
+// in (0, 2^-125) at a vertex that clipping keeps (docs/design/vertex-stage.md, "Clipping").
 struct DrawReport {
   std::uint64_t triangles = 0;  // in the mesh
   std::uint64_t clipped = 0;    // cut by the clipping planes into pieces, clip_triangles in all

@@ -5,7 +5,7 @@
 // shared edges).
 //
 // Accuracy: every ISA's area lies within kPixelAreaTolerance of the exact area of the pixel's
-// square inside the snapped triangle (the derivation is in kernels/generic/pixel_area-inl.hpp).
+// square inside the snapped triangle (docs/design/exact-area.md says how it is derived).
 //
 // Thread safety: as rasterize() (coverage.hpp): no state is kept between calls; the sink sees
 // tiles on the calling thread, in the order stated below.

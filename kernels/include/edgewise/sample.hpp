@@ -8,7 +8,7 @@
 //   LodFormula::exact:    rho = max(sqrt(ux^2 + vx^2), sqrt(uy^2 + vy^2))
 //   LodFormula::max_axis: rho = max(|ux|, |vx|, |uy|, |vy|)   (cheaper; up to sqrt(2) lower)
 // The level 2^lambda texels wide, read bilinearly, blurs as much as a box of width rho (equal
-// variances, kernels/src/level_of_detail.hpp). lambda <= 0 (rho <= sqrt(3) texels) magnifies
+// variances, docs/design/textures.md). lambda <= 0 (rho <= sqrt(3) texels) magnifies
 // (level 0); mip filters clamp lambda to [0, levels - 1].
 //
 // The filters (all results linear RGBA, 8-bit textures decoded first):
@@ -42,9 +42,9 @@
 //                          which bounds a query's work to a few times what lod_bias 0 needs
 //                          (at most (sqrt(8 M^2 + 12) + 1)^2 texels). With lod_bias >= -1 it
 //                          never applies in a level that halves both sides (every level but the
-//                          last of a square texture; kernels/reference/sample_reference.hpp,
-//                          ewa_box_limit, has the proof); a level stuck at 1 texel on its
-//                          shorter side holds more of the footprint and may reach it sooner
+//                          last of a square texture; docs/design/proofs.md indexes the
+//                          proof); a level stuck at 1 texel on its shorter side holds more of
+//                          the footprint and may reach it sooner
 //
 // Wrap modes apply per axis to every texel fetched. Results for bad input are defined: a query
 // with non-finite s or t gives (0, 0, 0, 0); derivatives that are zero magnify; huge ones select

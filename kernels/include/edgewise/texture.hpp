@@ -138,7 +138,7 @@ class Texture {
   PyramidFilter pyramid_ = PyramidFilter::box;
   std::vector<std::byte, detail::TileAlignedAllocator<std::byte>> storage_;
 
-  friend class TextureBuilder;  // kernels/src: fills a Texture from level 0
+  friend class TextureBuilder;  // the library's: fills a Texture from level 0
 };
 
 // sRGB transfer functions (IEC 61966-2-1), on [0, 1].
