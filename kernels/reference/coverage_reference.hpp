@@ -17,8 +17,6 @@ namespace edgewise::detail {
 struct DroppedTriangles;
 struct SampleWindow;
 struct TriangleBatch;
-struct ShadeBatch;
-struct ShadeCounts;
 }  // namespace edgewise::detail
 
 namespace edgewise::reference {
@@ -65,9 +63,5 @@ void for_each_drawn_triangle(
 detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
                                                std::uint32_t* indices, std::size_t triangles,
                                                CullMode cull, const detail::SampleWindow& window);
-
-// The shading reference (draw_reference.cpp): depth test, double-precision interpolation and
-// shading of every covered sample.
-void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
 
 }  // namespace edgewise::reference

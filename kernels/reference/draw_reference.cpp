@@ -17,8 +17,9 @@
 #include "../src/shade_batch.hpp"
 #include "../src/shading_budget.hpp"
 #include "../src/texture_planes.hpp"
-#include "interpolation_reference.hpp"
 #include "coverage_reference.hpp"
+#include "draw_reference.hpp"
+#include "interpolation_reference.hpp"
 #include "sample_reference.hpp"
 
 namespace edgewise::reference {

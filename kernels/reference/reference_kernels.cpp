@@ -10,6 +10,7 @@
 
 #include "../src/kernel_table.hpp"
 #include "coverage_reference.hpp"
+#include "draw_reference.hpp"
 #include "pixel_area_reference.hpp"
 #include "resolve_reference.hpp"
 #include "sample_reference.hpp"
