@@ -128,19 +128,20 @@ void sample_fields(const detail::TextureDescription& texture, const SamplerOptio
 }  // namespace
 
 const detail::KernelTable& kernel_table() {
-  static constexpr detail::KernelTable table{Isa::reference,
-                                             &rasterize,
-                                             &count_coverage,
-                                             &transform_vertices,
-                                             &reference::map_vertices,
-                                             &reference::assemble_triangles,
-                                             &reference::drop_culled_triangles,
-                                             &reference::shade,
-                                             &reference::resolve_box,
-                                             &reference::resolve_taps,
-                                             &sample,
-                                             &sample_fields,
-                                             &rasterize_areas};
+  static constexpr detail::KernelTable table{
+      .isa = Isa::reference,
+      .rasterize = &rasterize,
+      .count_coverage = &count_coverage,
+      .transform_vertices = &transform_vertices,
+      .map_vertices = &reference::map_vertices,
+      .assemble_triangles = &reference::assemble_triangles,
+      .drop_culled_triangles = &reference::drop_culled_triangles,
+      .shade = &reference::shade,
+      .resolve_box = &reference::resolve_box,
+      .resolve_taps = &reference::resolve_taps,
+      .sample = &sample,
+      .sample_fields = &sample_fields,
+      .rasterize_areas = &rasterize_areas};
   return table;
 }
 
