@@ -123,6 +123,187 @@ void rebuild_depth_bounds(const detail::ShadeBatch& batch) {
   }
 }
 
+// A drawn triangle's corners and the planes every path evaluates: depth, and the texture
+// coordinates' when textured.
+struct PlanarTriangle {
+  Corner c[3];
+  detail::DepthPlane depth;
+  detail::TexturePlanes texture;
+};
+
+PlanarTriangle planar_triangle(const detail::ShadeBatch& batch, std::size_t t) {
+  PlanarTriangle tri;
+  Vec2 p[3];
+  float z[3];
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t v = batch.coverage.indices ? batch.coverage.indices[3 * t + i] : 3 * t + i;
+    tri.c[i] = {batch.coverage.vertices[v],
+                batch.depth[v],
+                batch.clip_w[v],
+                batch.colors[v],
+                batch.normals ? batch.normals[v] : Vec3{0, 0, 0},
+                batch.uvs ? batch.uvs[v] : Vec2{0, 0}};
+    p[i] = tri.c[i].position;
+    z[i] = tri.c[i].depth;
+  }
+  tri.depth = detail::make_depth_plane(p, z);
+  if (batch.texture != nullptr) {
+    const Vec2 uv[3] = {tri.c[0].uv, tri.c[1].uv, tri.c[2].uv};
+    const double w[3] = {tri.c[0].w, tri.c[1].w, tri.c[2].w};
+    tri.texture = detail::make_texture_planes(p, uv, w, batch.perspective);
+  }
+  return tri;
+}
+
+// The error budget's choices for a triangle (shading_budget.hpp), made from the same inputs as
+// the kernels': one colour for all of it, or (`tiles`) a choice per tile.
+struct BudgetChoice {
+  detail::ShadeInterval interval;
+  std::optional<std::uint32_t> constant;
+  bool tiles = false;
+};
+
+BudgetChoice budget_choice(const detail::ShadeBatch& batch, const PlanarTriangle& tri) {
+  BudgetChoice choice;
+  if (!detail::budget_shades(batch)) return choice;
+  detail::BudgetTriangle budget_triangle;
+  for (int i = 0; i < 3; ++i) {
+    budget_triangle.position[i] = tri.c[i].position;
+    budget_triangle.w[i] = tri.c[i].w;
+    budget_triangle.colour[i] = tri.c[i].color;
+    budget_triangle.normal[i] = tri.c[i].normal;
+  }
+  choice.interval = detail::shade_interval(budget_triangle, batch);
+  if (batch.texture == nullptr) {
+    choice.constant = detail::constant_colour(choice.interval, batch.budget_codes);
+  } else {
+    const Vec2 position[3] = {tri.c[0].position, tri.c[1].position, tri.c[2].position};
+    const detail::TexturePlan plan =
+        detail::texture_plan(choice.interval, tri.texture, batch, position);
+    choice.constant = plan.colour;
+    choice.tiles = plan.tiles;
+  }
+  return choice;
+}
+
+// The pixels [x0, x1) x [y0, y1) of one tile, and which of their samples passed the depth test.
+struct TileSamples {
+  std::int32_t x0, x1, y0, y1;
+  bool passed[64][kMaxSamples] = {};
+  bool any_passed[64] = {};
+};
+
+// Each covered sample of the tile's pixels depth-tested and, with depth writes, written.
+void test_tile_depth(const detail::ShadeBatch& batch, const SnappedTriangle& snapped,
+                     const detail::DepthPlane& plane, std::span<const SampleOffset> pattern,
+                     TileSamples& tile, detail::ShadeCounts& counts) {
+  for (std::int32_t py = tile.y0; py < tile.y1; ++py) {
+    for (std::int32_t px = tile.x0; px < tile.x1; ++px) {
+      const int at = (py & 7) * 8 + (px & 7);
+      for (std::size_t k = 0; k < pattern.size(); ++k) {
+        const SampleOffset offset = pattern[k];
+        if (!covers_sample(snapped, px, py, offset)) continue;
+        ++counts.fragments;
+        const std::size_t index = sample_index(batch, px, py, k);
+        const float depth = detail::depth_at(plane, px, py, offset.x, offset.y);
+        if (!passes(batch.depth_test, depth, batch.depth_tiles[index])) continue;
+        ++counts.passed;
+        if (batch.depth_write) batch.depth_tiles[index] = depth;
+        tile.passed[at][k] = tile.any_passed[at] = true;
+      }
+    }
+  }
+}
+
+// The budget's choice for a tile, from the texture queries of the pixels written there.
+detail::TileTexture tile_texture_choice(const detail::ShadeBatch& batch, const PlanarTriangle& tri,
+                                        const BudgetChoice& budget, const TileSamples& tile) {
+  detail::TileQueries queries;
+  for (int f = 0; f < 6; ++f) {
+    queries.low[f] = std::numeric_limits<float>::infinity();
+    queries.high[f] = -std::numeric_limits<float>::infinity();
+  }
+  bool any = false;
+  for (std::int32_t py = tile.y0; py < tile.y1; ++py) {
+    for (std::int32_t px = tile.x0; px < tile.x1; ++px) {
+      if (!tile.any_passed[(py & 7) * 8 + (px & 7)]) continue;
+      any = true;
+      const TextureQuery q = detail::texture_query(tri.texture, batch.derivatives, px, py);
+      const float fields[6] = {q.s, q.t, q.dsdx, q.dtdx, q.dsdy, q.dtdy};
+      for (int f = 0; f < 6; ++f) {
+        queries.finite = queries.finite && std::isfinite(fields[f]);
+        queries.low[f] = std::min(queries.low[f], fields[f]);
+        queries.high[f] = std::max(queries.high[f], fields[f]);
+      }
+    }
+  }
+  if (!any) return {};
+  return detail::measured_texture_tile(budget.interval, queries, batch);
+}
+
+// Each pixel of the tile with a passed sample shaded once, at its centre, and its colour written
+// to those samples.
+void write_tile_colours(const detail::ShadeBatch& batch, const PlanarTriangle& tri,
+                        std::optional<std::uint32_t> budget_colour,
+                        const detail::TileTexture& choice, std::size_t samples,
+                        const TileSamples& tile, detail::ShadeCounts& counts) {
+  for (std::int32_t py = tile.y0; py < tile.y1; ++py) {
+    for (std::int32_t px = tile.x0; px < tile.x1; ++px) {
+      const int at = (py & 7) * 8 + (px & 7);
+      if (!tile.any_passed[at]) continue;
+      std::array<double, 4> rgba = shaded_colour(batch, tri.c, px + 0.5, py + 0.5);
+      if (batch.texture != nullptr && !budget_colour) {
+        Rgba texel;
+        if (choice.one_texel) {
+          for (int k = 0; k < 4; ++k)
+            texel[k] = choice.texel[k];
+        } else {
+          const TextureQuery query = detail::texture_query(tri.texture, batch.derivatives, px, py);
+          texel = sample(*batch.texture, batch.sampler, query);
+        }
+        for (int k = 0; k < 4; ++k)
+          rgba[k] *= texel[k];
+      }
+      const std::uint32_t packed = budget_colour ? *budget_colour : pack(rgba);
+      for (std::size_t k = 0; k < samples; ++k) {
+        if (!tile.passed[at][k]) continue;
+        batch.color_tiles[sample_index(batch, px, py, k)] = packed;
+        if (budget_colour) {
+          ++counts.constant;
+        } else if (choice.one_texel) {
+          ++counts.one_texel;
+        }
+      }
+    }
+  }
+}
+
+// One triangle, tile by tile, as the kernels choose per tile: every pixel's depth first, then
+// the choice from the pixels written, then their colour (a pixel's depth is tested once per
+// triangle, so the order changes nothing else).
+void shade_triangle(const detail::ShadeBatch& batch, std::size_t t, const SnappedTriangle& snapped,
+                    std::span<const SampleOffset> pattern, detail::ShadeCounts& counts) {
+  const PlanarTriangle tri = planar_triangle(batch, t);
+  const BudgetChoice budget = budget_choice(batch, tri);
+  const PixelRect box = candidate_pixels(snapped, batch.coverage.clip);
+  if (box.empty()) return;
+  for (std::int32_t ty = box.y0 >> 3; ty <= (box.y1 - 1) >> 3; ++ty) {
+    for (std::int32_t tx = box.x0 >> 3; tx <= (box.x1 - 1) >> 3; ++tx) {
+      TileSamples tile;
+      tile.x0 = std::max(box.x0, tx * 8);
+      tile.x1 = std::min(box.x1, tx * 8 + 8);
+      tile.y0 = std::max(box.y0, ty * 8);
+      tile.y1 = std::min(box.y1, ty * 8 + 8);
+      test_tile_depth(batch, snapped, tri.depth, pattern, tile, counts);
+      const detail::TileTexture choice =
+          budget.tiles ? tile_texture_choice(batch, tri, budget, tile) : detail::TileTexture{};
+      const std::optional<std::uint32_t> budget_colour =
+          budget.constant ? budget.constant : choice.colour;
+      write_tile_colours(batch, tri, budget_colour, choice, pattern.size(), tile, counts);
+    }
+  }
+}
+
 }  // namespace
 
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
@@ -131,141 +312,10 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
   const std::span<const SampleOffset> pattern = batch.coverage.samples.empty()
                                                     ? std::span<const SampleOffset>(kCentre)
                                                     : batch.coverage.samples;
-  const std::size_t samples = pattern.size();
-  for_each_drawn_triangle(batch.coverage, report, [&](std::size_t t, const SnappedTriangle& tri) {
-    Corner c[3];
-    Vec2 p[3];
-    float z[3];
-    for (int i = 0; i < 3; ++i) {
-      const std::size_t v = batch.coverage.indices ? batch.coverage.indices[3 * t + i] : 3 * t + i;
-      c[i] = {batch.coverage.vertices[v],
-              batch.depth[v],
-              batch.clip_w[v],
-              batch.colors[v],
-              batch.normals ? batch.normals[v] : Vec3{0, 0, 0},
-              batch.uvs ? batch.uvs[v] : Vec2{0, 0}};
-      p[i] = c[i].position;
-      z[i] = c[i].depth;
-    }
-    const detail::DepthPlane plane = detail::make_depth_plane(p, z);
-    detail::TexturePlanes texture_planes;
-    if (batch.texture != nullptr) {
-      const Vec2 uv[3] = {c[0].uv, c[1].uv, c[2].uv};
-      const double w[3] = {c[0].w, c[1].w, c[2].w};
-      texture_planes = detail::make_texture_planes(p, uv, w, batch.perspective);
-    }
-    // The error budget's choices (shading_budget.hpp), made from the same inputs as the kernels'.
-    detail::ShadeInterval interval;
-    std::optional<std::uint32_t> constant;
-    if (detail::budget_shades(batch)) {
-      detail::BudgetTriangle budget_triangle;
-      for (int i = 0; i < 3; ++i) {
-        budget_triangle.position[i] = c[i].position;
-        budget_triangle.w[i] = c[i].w;
-        budget_triangle.colour[i] = c[i].color;
-        budget_triangle.normal[i] = c[i].normal;
-      }
-      interval = detail::shade_interval(budget_triangle, batch);
-    }
-    bool budget_tiles = false;
-    if (detail::budget_shades(batch) && batch.texture == nullptr) {
-      constant = detail::constant_colour(interval, batch.budget_codes);
-    } else if (detail::budget_shades(batch)) {
-      const Vec2 position[3] = {c[0].position, c[1].position, c[2].position};
-      const detail::TexturePlan plan =
-          detail::texture_plan(interval, texture_planes, batch, position);
-      constant = plan.colour;
-      budget_tiles = plan.tiles;
-    }
-    const PixelRect box = candidate_pixels(tri, batch.coverage.clip);
-    if (box.empty()) return;
-    // Tile by tile, as the kernels choose per tile: every pixel's depth first, then the choice
-    // from the pixels written, then their colour (a pixel's depth is tested once per triangle,
-    // so the order changes nothing else).
-    for (std::int32_t ty = box.y0 >> 3; ty <= (box.y1 - 1) >> 3; ++ty) {
-      for (std::int32_t tx = box.x0 >> 3; tx <= (box.x1 - 1) >> 3; ++tx) {
-        const std::int32_t x0 = std::max(box.x0, tx * 8), x1 = std::min(box.x1, tx * 8 + 8);
-        const std::int32_t y0 = std::max(box.y0, ty * 8), y1 = std::min(box.y1, ty * 8 + 8);
-        // Each covered sample's depth tested and written.
-        bool passed[64][kMaxSamples] = {};
-        bool any_passed[64] = {};
-        for (std::int32_t py = y0; py < y1; ++py) {
-          for (std::int32_t px = x0; px < x1; ++px) {
-            const int at = (py & 7) * 8 + (px & 7);
-            for (std::size_t k = 0; k < samples; ++k) {
-              const SampleOffset offset = pattern[k];
-              if (!covers_sample(tri, px, py, offset)) continue;
-              ++counts.fragments;
-              const std::size_t index = sample_index(batch, px, py, k);
-              const float depth = detail::depth_at(plane, px, py, offset.x, offset.y);
-              if (!passes(batch.depth_test, depth, batch.depth_tiles[index])) continue;
-              ++counts.passed;
-              if (batch.depth_write) batch.depth_tiles[index] = depth;
-              passed[at][k] = any_passed[at] = true;
-            }
-          }
-        }
-        // The budget's choice for the tile, from the queries of the pixels written.
-        detail::TileTexture choice;
-        if (budget_tiles) {
-          detail::TileQueries queries;
-          for (int f = 0; f < 6; ++f) {
-            queries.low[f] = std::numeric_limits<float>::infinity();
-            queries.high[f] = -std::numeric_limits<float>::infinity();
-          }
-          bool any = false;
-          for (std::int32_t py = y0; py < y1; ++py) {
-            for (std::int32_t px = x0; px < x1; ++px) {
-              if (!any_passed[(py & 7) * 8 + (px & 7)]) continue;
-              any = true;
-              const TextureQuery q =
-                  detail::texture_query(texture_planes, batch.derivatives, px, py);
-              const float fields[6] = {q.s, q.t, q.dsdx, q.dtdx, q.dsdy, q.dtdy};
-              for (int f = 0; f < 6; ++f) {
-                queries.finite = queries.finite && std::isfinite(fields[f]);
-                queries.low[f] = std::min(queries.low[f], fields[f]);
-                queries.high[f] = std::max(queries.high[f], fields[f]);
-              }
-            }
-          }
-          if (any) choice = detail::measured_texture_tile(interval, queries, batch);
-        }
-        const std::optional<std::uint32_t> budget_colour = constant ? constant : choice.colour;
-        // Each pixel with a passed sample shaded once, at its centre, and its colour written to
-        // those samples.
-        for (std::int32_t py = y0; py < y1; ++py) {
-          for (std::int32_t px = x0; px < x1; ++px) {
-            const int at = (py & 7) * 8 + (px & 7);
-            if (!any_passed[at]) continue;
-            std::array<double, 4> rgba = shaded_colour(batch, c, px + 0.5, py + 0.5);
-            if (batch.texture != nullptr && !budget_colour) {
-              Rgba texel;
-              if (choice.one_texel) {
-                for (int k = 0; k < 4; ++k)
-                  texel[k] = choice.texel[k];
-              } else {
-                const TextureQuery query =
-                    detail::texture_query(texture_planes, batch.derivatives, px, py);
-                texel = sample(*batch.texture, batch.sampler, query);
-              }
-              for (int k = 0; k < 4; ++k)
-                rgba[k] *= texel[k];
-            }
-            const std::uint32_t packed = budget_colour ? *budget_colour : pack(rgba);
-            for (std::size_t k = 0; k < samples; ++k) {
-              if (!passed[at][k]) continue;
-              batch.color_tiles[sample_index(batch, px, py, k)] = packed;
-              if (budget_colour) {
-                ++counts.constant;
-              } else if (choice.one_texel) {
-                ++counts.one_texel;
-              }
-            }
-          }
-        }
-      }
-    }
-  });
+  for_each_drawn_triangle(batch.coverage, report,
+                          [&](std::size_t t, const SnappedTriangle& snapped) {
+                            shade_triangle(batch, t, snapped, pattern, counts);
+                          });
   if (batch.depth_write && batch.tile_max_depth != nullptr) rebuild_depth_bounds(batch);
 }
 
