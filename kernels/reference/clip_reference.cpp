@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "edgewise/coverage.hpp"
 
@@ -85,63 +86,62 @@ double plane_distance(int plane, double x, double y, double z, double w, const V
   return distance(planes_for(viewport)[static_cast<std::size_t>(plane)], x, y, z, w);
 }
 
-ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
-                             const Viewport& viewport) {
-  ClippedPolygon result;
-  const std::array<ClipVertex, 3> triangle = {widen(p0, 1, 0, 0), widen(p1, 0, 1, 0),
-                                              widen(p2, 0, 0, 1)};
+namespace {
 
-  // Bad input.
+// Non-finite coordinates, or any beyond kMaxClipCoordinate, are errors.
+std::optional<ClipStatus> bad_input(const Vec4& p0, const Vec4& p1, const Vec4& p2) {
   for (const Vec4& p : {p0, p1, p2}) {
     for (float c : {p.x, p.y, p.z, p.w}) {
-      if (!std::isfinite(c)) {
-        result.status = ClipStatus::error_non_finite;
-        return result;
-      }
+      if (!std::isfinite(c)) return ClipStatus::error_non_finite;
     }
   }
   for (const Vec4& p : {p0, p1, p2}) {
     for (float c : {p.x, p.y, p.z, p.w}) {
       if (std::fabs(static_cast<double>(c)) > static_cast<double>(kMaxClipCoordinate)) {
-        result.status = ClipStatus::error_out_of_range;
-        return result;
+        return ClipStatus::error_out_of_range;
       }
     }
   }
+  return std::nullopt;
+}
 
-  const std::array<Plane, kPlaneCount> planes = planes_for(viewport);
+// The closest call a clipping decision made: a vertex's distance to a plane, scaled by the plane's
+// scale for the triangle.
+struct DecisionRecord {
   std::array<double, kPlaneCount> scales{};
-  for (int p = 0; p < kPlaneCount; ++p)
-    scales[p] = scale(planes[p], triangle);
-  const auto note_decision = [&](int p, double d) {
-    if (scales[p] > 0.0) {
-      result.closest_decision = std::min(result.closest_decision, std::fabs(d) / scales[p]);
-    }
-  };
+  double* closest;
 
-  // Rejected when all three vertices are outside one plane of the frustum: near, far, a side.
-  // Needs clipping when a vertex is outside one of the six clipping planes.
-  bool needs_clipping = false;
+  void note(int p, double d) const {
+    if (scales[p] > 0.0) *closest = std::min(*closest, std::fabs(d) / scales[p]);
+  }
+};
+
+// Whether a vertex is outside one of the six clipping planes; nullopt when the triangle is
+// rejected, all three vertices outside one plane of the frustum (near, far, a side).
+std::optional<bool> needs_clipping(const std::array<ClipVertex, 3>& triangle,
+                                   const std::array<Plane, kPlaneCount>& planes,
+                                   const DecisionRecord& record) {
+  bool clipping = false;
   for (int p = 0; p < kPlaneCount; ++p) {
     int outside = 0;
     for (const ClipVertex& v : triangle) {
       const double d = distance(planes[p], v);
       // Near, far and the sides compare input floats exactly, in float32 too: no tie there.
-      if (p >= 2 && p < kClipPlaneCount) note_decision(p, d);
+      if (p >= 2 && p < kClipPlaneCount) record.note(p, d);
       outside += d < 0.0;
     }
     const bool frustum_plane = p < 2 || p >= 6;
-    if (frustum_plane && outside == 3) {
-      result.status = ClipStatus::outside;
-      return result;
-    }
-    if (p < kClipPlaneCount && outside > 0) needs_clipping = true;
+    if (frustum_plane && outside == 3) return std::nullopt;
+    if (p < kClipPlaneCount && outside > 0) clipping = true;
   }
+  return clipping;
+}
 
-  // Sutherland-Hodgman: walk the polygon's edges; keep inside vertices, and add the intersection
-  // wherever an edge crosses the plane.
-  std::vector<ClipVertex> polygon(triangle.begin(), triangle.end());
-  for (int p = 0; p < kClipPlaneCount && needs_clipping; ++p) {
+// Sutherland-Hodgman: walk the polygon's edges; keep inside vertices, and add the intersection
+// wherever an edge crosses the plane. Fewer than three vertices left: the triangle is outside.
+bool clip_polygon(std::vector<ClipVertex>& polygon, const std::array<Plane, kPlaneCount>& planes,
+                  const DecisionRecord& record) {
+  for (int p = 0; p < kClipPlaneCount; ++p) {
     std::vector<ClipVertex> clipped;
     const std::size_t n = polygon.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -149,33 +149,55 @@ ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
       const ClipVertex& next = polygon[(i + 1) % n];
       const double d_current = distance(planes[p], current);
       const double d_next = distance(planes[p], next);
-      if (!is_input(current)) note_decision(p, d_current);
+      if (!is_input(current)) record.note(p, d_current);
       if (d_current >= 0.0) clipped.push_back(current);
       if ((d_current >= 0.0) != (d_next >= 0.0)) {
         clipped.push_back(intersection(current, d_current, next, d_next));
       }
     }
     polygon = std::move(clipped);
-    if (polygon.size() < 3) {
-      result.status = ClipStatus::outside;
-      return result;
-    }
+    if (polygon.size() < 3) return false;
   }
+  return true;
+}
 
-  // Inside the near and far planes w >= z >= 0; w = 0 only where the near plane meets the eye.
-  // A smaller positive w than float32 projects is out of range (clip.hpp, "Tiny w").
+// Inside the near and far planes w >= z >= 0; w = 0 only where the near plane meets the eye.
+// A smaller positive w than float32 projects is out of range (clip.hpp, "Tiny w").
+std::optional<ClipStatus> unprojectable(const std::vector<ClipVertex>& polygon) {
   for (const ClipVertex& v : polygon) {
-    if (!(v.w > 0.0)) {
-      result.status = ClipStatus::culled_degenerate;
-      return result;
-    }
-    if (v.w < static_cast<double>(kMinProjectedW)) {
-      result.status = ClipStatus::error_out_of_range;
-      return result;
-    }
+    if (!(v.w > 0.0)) return ClipStatus::culled_degenerate;
+    if (v.w < static_cast<double>(kMinProjectedW)) return ClipStatus::error_out_of_range;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ClippedPolygon clip_triangle(const Vec4& p0, const Vec4& p1, const Vec4& p2,
+                             const Viewport& viewport) {
+  ClippedPolygon result;
+  if (const std::optional<ClipStatus> error = bad_input(p0, p1, p2)) {
+    result.status = *error;
+    return result;
+  }
+  const std::array<ClipVertex, 3> triangle = {widen(p0, 1, 0, 0), widen(p1, 0, 1, 0),
+                                              widen(p2, 0, 0, 1)};
+  const std::array<Plane, kPlaneCount> planes = planes_for(viewport);
+  DecisionRecord record{{}, &result.closest_decision};
+  for (int p = 0; p < kPlaneCount; ++p)
+    record.scales[p] = scale(planes[p], triangle);
+  const std::optional<bool> clipping = needs_clipping(triangle, planes, record);
+  std::vector<ClipVertex> polygon(triangle.begin(), triangle.end());
+  if (!clipping || (*clipping && !clip_polygon(polygon, planes, record))) {
+    result.status = ClipStatus::outside;
+    return result;
+  }
+  if (const std::optional<ClipStatus> status = unprojectable(polygon)) {
+    result.status = *status;
+    return result;
   }
   result.vertices = std::move(polygon);
-  result.status = needs_clipping ? ClipStatus::clipped : ClipStatus::inside;
+  result.status = *clipping ? ClipStatus::clipped : ClipStatus::inside;
   return result;
 }
 
