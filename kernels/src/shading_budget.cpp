@@ -172,23 +172,24 @@ bool budget_tiles(const ShadeBatch& batch) {
   }
 }
 
-ShadeInterval shade_interval(const BudgetTriangle& t, const ShadeBatch& batch) {
-  const double width_limit =
-      batch.texture != nullptr ? kInfinity : untextured_width_limit(batch.budget_codes);
+namespace {
+
+// Flat shading: 255 c in float, one rounding.
+ShadeInterval flat_interval(const BudgetTriangle& t) {
   ShadeInterval out;
-  if (batch.shading == Shading::flat) {
-    // 255 c in float, one rounding.
-    for (int k = 0; k < 4; ++k) {
-      out.low[k] = out.high[k] = (&t.colour[0].x)[k];
-      out.rounding[k] = 2.0 * kUnit * std::abs(out.low[k]);
-      if (!std::isfinite(out.low[k])) return out;
-    }
-    out.bounded = true;
-    return out;
+  for (int k = 0; k < 4; ++k) {
+    out.low[k] = out.high[k] = (&t.colour[0].x)[k];
+    out.rounding[k] = 2.0 * kUnit * std::abs(out.low[k]);
+    if (!std::isfinite(out.low[k])) return out;
   }
-  // The model first: the colours' and the light's ranges, cheap, and often enough to decide.
-  double brightest = 0.0;  // of R, G and B
-  double colour_abs[4];
+  out.bounded = true;
+  return out;
+}
+
+// The model's colour ranges: each channel's least and greatest vertex value into `out`, the
+// larger magnitude of the two into colour_abs; returns the largest of R, G and B.
+double colour_ranges(const BudgetTriangle& t, ShadeInterval& out, double (&colour_abs)[4]) {
+  double brightest = 0.0;
   for (int k = 0; k < 4; ++k) {
     double low = kInfinity, high = -kInfinity;
     for (int i = 0; i < 3; ++i) {
@@ -201,6 +202,49 @@ ShadeInterval shade_interval(const BudgetTriangle& t, const ShadeBatch& batch) {
     colour_abs[k] = std::max(std::abs(low), std::abs(high));
     if (k < 3) brightest = std::max(brightest, colour_abs[k]);
   }
+  return brightest;
+}
+
+// The exact path's float32 rounding of each colour plane (scaled to 0 .. 255), divided by the
+// plane of 1 / w where the triangle divides, into out.rounding; returns false where the plane of
+// 1 / w cannot be kept from 0.
+bool planar_rounding(const BudgetTriangle& t, const PlaneGeometry& geometry, bool divides,
+                     const double (&inverse_w)[3], const double (&colour_abs)[4],
+                     ShadeInterval& out) {
+  const double s = std::min({inverse_w[0], inverse_w[1], inverse_w[2]});
+  // The plane of 1 / w, kept from falling below s: its error bound as the kernels hold it.
+  double q_error = 0.0;
+  if (divides) {
+    q_error = std::max(7.0 * kUnit * plane_magnitude(geometry, inverse_w), kUnit * s);
+    if (!(s - q_error > 0.0)) return false;
+  }
+  const double inverse_margin = divides ? 1.0 / (s - q_error) : 1.0;
+  for (int k = 0; k < 4; ++k) {
+    double f[3];
+    for (int i = 0; i < 3; ++i)
+      f[i] = 255.0 * static_cast<double>((&t.colour[i].x)[k]) * inverse_w[i];
+    const double p_error = 7.0 * kUnit * plane_magnitude(geometry, f);
+    double error = p_error;
+    if (divides) {
+      // p / q with |p / q| <= 255 c_abs exactly: worst where q is least, s.
+      const double ratio = (s * 255.0 * colour_abs[k] + p_error) * inverse_margin;
+      error = (p_error + ratio * q_error) * inverse_margin + 2.0 * kUnit * ratio;
+    }
+    out.rounding[k] = error / 255.0;
+  }
+  return true;
+}
+
+}  // namespace
+
+ShadeInterval shade_interval(const BudgetTriangle& t, const ShadeBatch& batch) {
+  if (batch.shading == Shading::flat) return flat_interval(t);
+  const double width_limit =
+      batch.texture != nullptr ? kInfinity : untextured_width_limit(batch.budget_codes);
+  ShadeInterval out;
+  // The model first: the colours' and the light's ranges, cheap, and often enough to decide.
+  double colour_abs[4];
+  const double brightest = colour_ranges(t, out, colour_abs);
   LightBound light{};
   double r_low = 0.0;
   if (batch.shading == Shading::diffuse) {
@@ -219,30 +263,12 @@ ShadeInterval shade_interval(const BudgetTriangle& t, const ShadeBatch& batch) {
     for (int i = 0; i < 3; ++i)
       inverse_w[i] = 1.0 / t.w[i];
   }
-  const double s = std::min({inverse_w[0], inverse_w[1], inverse_w[2]});
-  // The plane of 1 / w, kept from falling below s: its error bound as the kernels hold it.
-  double q_error = 0.0;
-  if (divides) {
-    q_error = std::max(7.0 * kUnit * plane_magnitude(geometry, inverse_w), kUnit * s);
-    if (!(s - q_error > 0.0)) return out;
-  }
-  const double inverse_margin = divides ? 1.0 / (s - q_error) : 1.0;
+  if (!planar_rounding(t, geometry, divides, inverse_w, colour_abs, out)) return out;
   double worst_colour = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    double f[3];
-    for (int i = 0; i < 3; ++i)
-      f[i] = 255.0 * static_cast<double>((&t.colour[i].x)[k]) * inverse_w[i];
-    const double p_error = 7.0 * kUnit * plane_magnitude(geometry, f);
-    double error = p_error;
-    if (divides) {
-      // p / q with |p / q| <= 255 c_abs exactly: worst where q is least, s.
-      const double ratio = (s * 255.0 * colour_abs[k] + p_error) * inverse_margin;
-      error = (p_error + ratio * q_error) * inverse_margin + 2.0 * kUnit * ratio;
-    }
-    out.rounding[k] = error / 255.0;
-    if (k < 3) worst_colour = std::max(worst_colour, out.rounding[k]);
-  }
+  for (int k = 0; k < 3; ++k)
+    worst_colour = std::max(worst_colour, out.rounding[k]);
   if (batch.shading == Shading::diffuse) {
+    const double s = std::min({inverse_w[0], inverse_w[1], inverse_w[2]});
     if (!light_error(t, geometry, divides, inverse_w, s, r_low, light)) return out;
     const double lit_error =
         (std::abs(1.0 - static_cast<double>(batch.ambient)) * light.error + 4.0 * kUnit) *
