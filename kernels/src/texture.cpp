@@ -112,78 +112,100 @@ class TextureBuilder {
   // their blocks'.
   static TexelRanges build_texel_ranges(const Texture& texture, const TextureLevel& level) {
     constexpr std::int32_t kBlock = TexelRanges::kBlock;
-    constexpr float kInfinity = std::numeric_limits<float>::infinity();
     TexelRanges ranges;
     ranges.columns = (level.width + kBlock - 1) / kBlock;
     ranges.rows = (level.height + kBlock - 1) / kBlock;
     const std::size_t blocks = static_cast<std::size_t>(ranges.columns) * ranges.rows;
-    ranges.low.assign(4 * blocks, kInfinity);
-    ranges.high.assign(4 * blocks, -kInfinity);
+    ranges.low.assign(4 * blocks, kInfinityF);
+    ranges.high.assign(4 * blocks, -kInfinityF);
     if (texture.format_ == TexelFormat::rgba8) {
-      std::vector<std::uint8_t> low(4 * blocks, 255), high(4 * blocks, 0);
-      const auto* codes = reinterpret_cast<const std::uint8_t*>(texture.texels(level));
-      for (std::int32_t y = 0; y < level.height; ++y) {
-        const std::uint8_t* row = codes + 4 * static_cast<std::size_t>(y) * level.width;
-        const std::size_t first_block = static_cast<std::size_t>(y / kBlock) * ranges.columns;
-        for (std::int32_t bx = 0; bx < ranges.columns; ++bx) {
-          // The block's part of this row, channel by channel in registers.
-          const std::int32_t end = std::min(level.width, (bx + 1) * kBlock);
-          std::uint8_t* block_low = &low[4 * (first_block + static_cast<std::size_t>(bx))];
-          std::uint8_t* block_high = &high[4 * (first_block + static_cast<std::size_t>(bx))];
-          std::uint8_t lo[4], hi[4];
-          for (int ch = 0; ch < 4; ++ch) {
-            lo[ch] = block_low[ch];
-            hi[ch] = block_high[ch];
-          }
-          for (std::int32_t x = bx * kBlock; x < end; ++x) {
-            for (int ch = 0; ch < 4; ++ch) {
-              lo[ch] = std::min(lo[ch], row[4 * x + ch]);
-              hi[ch] = std::max(hi[ch], row[4 * x + ch]);
-            }
-          }
-          for (int ch = 0; ch < 4; ++ch) {
-            block_low[ch] = lo[ch];
-            block_high[ch] = hi[ch];
-          }
-        }
-      }
-      const std::span<const float, 256> srgb = srgb_decode_table();
-      for (std::size_t i = 0; i < 4 * blocks; ++i) {
-        const bool decode = texture.encoding_ == ColorEncoding::srgb && i % 4 < 3;
-        const auto linear = [&](std::uint8_t code) {
-          return decode ? srgb[code] : static_cast<float>(code) / 255.0f;
-        };
-        ranges.low[i] = std::nextafter(linear(low[i]), -kInfinity);
-        ranges.high[i] = std::nextafter(linear(high[i]), kInfinity);
-      }
+      code_block_ranges(texture, level, ranges);
     } else {
-      std::vector<bool> has_nan(4 * blocks, false);
-      for (std::int32_t y = 0; y < level.height; ++y) {
-        const std::size_t first_block = static_cast<std::size_t>(y / kBlock) * ranges.columns;
-        for (std::int32_t x = 0; x < level.width; ++x) {
-          const std::size_t at = 4 * (first_block + static_cast<std::size_t>(x / kBlock));
-          float v[4];
-          std::memcpy(
-              v, texture.texels(level) + 16 * (static_cast<std::size_t>(y) * level.width + x), 16);
+      float_block_ranges(texture, level, ranges);
+    }
+    coarse_ranges(ranges);
+    return ranges;
+  }
+
+  static constexpr float kInfinityF = std::numeric_limits<float>::infinity();
+
+  // The blocks' ranges of an 8-bit level: least and greatest codes, then decoded.
+  static void code_block_ranges(const Texture& texture, const TextureLevel& level,
+                                TexelRanges& ranges) {
+    constexpr std::int32_t kBlock = TexelRanges::kBlock;
+    const std::size_t blocks = ranges.low.size() / 4;
+    std::vector<std::uint8_t> low(4 * blocks, 255), high(4 * blocks, 0);
+    const auto* codes = reinterpret_cast<const std::uint8_t*>(texture.texels(level));
+    for (std::int32_t y = 0; y < level.height; ++y) {
+      const std::uint8_t* row = codes + 4 * static_cast<std::size_t>(y) * level.width;
+      const std::size_t first_block = static_cast<std::size_t>(y / kBlock) * ranges.columns;
+      for (std::int32_t bx = 0; bx < ranges.columns; ++bx) {
+        // The block's part of this row, channel by channel in registers.
+        const std::int32_t end = std::min(level.width, (bx + 1) * kBlock);
+        std::uint8_t* block_low = &low[4 * (first_block + static_cast<std::size_t>(bx))];
+        std::uint8_t* block_high = &high[4 * (first_block + static_cast<std::size_t>(bx))];
+        std::uint8_t lo[4], hi[4];
+        for (int ch = 0; ch < 4; ++ch) {
+          lo[ch] = block_low[ch];
+          hi[ch] = block_high[ch];
+        }
+        for (std::int32_t x = bx * kBlock; x < end; ++x) {
           for (int ch = 0; ch < 4; ++ch) {
-            if (std::isnan(v[ch])) has_nan[at + ch] = true;
-            ranges.low[at + ch] = std::fmin(ranges.low[at + ch], v[ch]);
-            ranges.high[at + ch] = std::fmax(ranges.high[at + ch], v[ch]);
+            lo[ch] = std::min(lo[ch], row[4 * x + ch]);
+            hi[ch] = std::max(hi[ch], row[4 * x + ch]);
           }
         }
-      }
-      for (std::size_t i = 0; i < 4 * blocks; ++i) {
-        ranges.low[i] = has_nan[i] ? -kInfinity : std::nextafter(ranges.low[i], -kInfinity);
-        ranges.high[i] = has_nan[i] ? kInfinity : std::nextafter(ranges.high[i], kInfinity);
+        for (int ch = 0; ch < 4; ++ch) {
+          block_low[ch] = lo[ch];
+          block_high[ch] = hi[ch];
+        }
       }
     }
-    // Coarse cells: kCoarse x kCoarse blocks each.
+    const std::span<const float, 256> srgb = srgb_decode_table();
+    for (std::size_t i = 0; i < 4 * blocks; ++i) {
+      const bool decode = texture.encoding_ == ColorEncoding::srgb && i % 4 < 3;
+      const auto linear = [&](std::uint8_t code) {
+        return decode ? srgb[code] : static_cast<float>(code) / 255.0f;
+      };
+      ranges.low[i] = std::nextafter(linear(low[i]), -kInfinityF);
+      ranges.high[i] = std::nextafter(linear(high[i]), kInfinityF);
+    }
+  }
+
+  // The blocks' ranges of a float level; a NaN makes its channel's range unbounded.
+  static void float_block_ranges(const Texture& texture, const TextureLevel& level,
+                                 TexelRanges& ranges) {
+    constexpr std::int32_t kBlock = TexelRanges::kBlock;
+    const std::size_t blocks = ranges.low.size() / 4;
+    std::vector<bool> has_nan(4 * blocks, false);
+    for (std::int32_t y = 0; y < level.height; ++y) {
+      const std::size_t first_block = static_cast<std::size_t>(y / kBlock) * ranges.columns;
+      for (std::int32_t x = 0; x < level.width; ++x) {
+        const std::size_t at = 4 * (first_block + static_cast<std::size_t>(x / kBlock));
+        float v[4];
+        std::memcpy(v, texture.texels(level) + 16 * (static_cast<std::size_t>(y) * level.width + x),
+                    16);
+        for (int ch = 0; ch < 4; ++ch) {
+          if (std::isnan(v[ch])) has_nan[at + ch] = true;
+          ranges.low[at + ch] = std::fmin(ranges.low[at + ch], v[ch]);
+          ranges.high[at + ch] = std::fmax(ranges.high[at + ch], v[ch]);
+        }
+      }
+    }
+    for (std::size_t i = 0; i < 4 * blocks; ++i) {
+      ranges.low[i] = has_nan[i] ? -kInfinityF : std::nextafter(ranges.low[i], -kInfinityF);
+      ranges.high[i] = has_nan[i] ? kInfinityF : std::nextafter(ranges.high[i], kInfinityF);
+    }
+  }
+
+  // Coarse cells: kCoarse x kCoarse blocks each.
+  static void coarse_ranges(TexelRanges& ranges) {
     constexpr std::int32_t kCoarse = TexelRanges::kCoarse;
     ranges.coarse_columns = (ranges.columns + kCoarse - 1) / kCoarse;
     ranges.coarse_rows = (ranges.rows + kCoarse - 1) / kCoarse;
     const std::size_t cells = static_cast<std::size_t>(ranges.coarse_columns) * ranges.coarse_rows;
-    ranges.coarse_low.assign(4 * cells, kInfinity);
-    ranges.coarse_high.assign(4 * cells, -kInfinity);
+    ranges.coarse_low.assign(4 * cells, kInfinityF);
+    ranges.coarse_high.assign(4 * cells, -kInfinityF);
     for (std::int32_t by = 0; by < ranges.rows; ++by) {
       for (std::int32_t bx = 0; bx < ranges.columns; ++bx) {
         const std::size_t from = 4 * (static_cast<std::size_t>(by) * ranges.columns + bx);
@@ -196,7 +218,6 @@ class TextureBuilder {
         }
       }
     }
-    return ranges;
   }
 
   TextureBuilder(Texture& texture, TexelFormat format)
