@@ -387,6 +387,27 @@ struct TileCoordinates {
   double rho_low;       // a lower bound on the sampler's rho, in texels of level 0
 };
 
+// A lower bound on |ds/dx| (f the plane of s/w, along x; or of t/w, or along y) over the tile,
+// from the planes' values at its corners: ds/dx = N / q^2 with N = (dx slope of s/w) q - (s/w)
+// (dx slope of q) a plane, so where N keeps its sign over the tile |ds/dx| >= min |N| / max q^2,
+// both at corners; the quad's mean of it, less the two values' errors (`extra`).
+double least_derivative(const TexturePlanes& planes, const AttributePlane& f,
+                        const double (&corner_q)[4], const double* values, double q_high,
+                        bool along_x, double extra) {
+  const double f_slope = along_x ? f.dx : f.dy;
+  const double q_slope = planes.divides ? (along_x ? planes.q.dx : planes.q.dy) : 0.0;
+  double low = kInfinity, high = -kInfinity;
+  for (int c = 0; c < 4; ++c) {
+    // N at the corner, give or take its double evaluation (the planes' values within 2^-50
+    // of their terms, the products and the difference a few roundings more).
+    const double a = f_slope * corner_q[c], b = values[c] * q_slope;
+    const double error = 0x1p-46 * (std::abs(a) + std::abs(b));
+    low = std::min(low, a - b - error);
+    high = std::max(high, a - b + error);
+  }
+  return std::max(0.0, least_magnitude(low, high) / (q_high * q_high) * (1.0 - 0x1p-40) - extra);
+}
+
 bool tile_coordinates(const TexturePlanes& planes, TextureDerivatives derivatives,
                       const PixelBox& box, double width, double height, TileCoordinates& out) {
   // The box's outermost pixel centres, relative to the planes' origin (exact in double).
@@ -452,24 +473,11 @@ bool tile_coordinates(const TexturePlanes& planes, TextureDerivatives derivative
       (std::abs(static_cast<double>(planes.t.dx)) + t_abs * q_x) * inverse * slack + t_extra;
   out.dt[1] =
       (std::abs(static_cast<double>(planes.t.dy)) + t_abs * q_y) * inverse * slack + t_extra;
-  // Below: ds/dx = N / q^2 with N = (dx slope of s/w) q - (s/w) (dx slope of q) a plane, so where
-  // N keeps its sign over the tile |ds/dx| >= min |N| / max q^2, both at corners; the quad's
-  // mean of it, less the two values' errors. Every rho is at least the largest of the four.
+  // Every rho is at least the largest of the four least derivatives.
   const double q_high = std::max({corner_q[0], corner_q[1], corner_q[2], corner_q[3]});
   const auto least = [&](const AttributePlane& f, const double* values, bool along_x,
                          double extra) {
-    const double f_slope = along_x ? f.dx : f.dy;
-    const double q_slope = planes.divides ? (along_x ? planes.q.dx : planes.q.dy) : 0.0;
-    double low = kInfinity, high = -kInfinity;
-    for (int c = 0; c < 4; ++c) {
-      // N at the corner, give or take its double evaluation (the planes' values within 2^-50
-      // of their terms, the products and the difference a few roundings more).
-      const double a = f_slope * corner_q[c], b = values[c] * q_slope;
-      const double error = 0x1p-46 * (std::abs(a) + std::abs(b));
-      low = std::min(low, a - b - error);
-      high = std::max(high, a - b + error);
-    }
-    return std::max(0.0, least_magnitude(low, high) / (q_high * q_high) * (1.0 - 0x1p-40) - extra);
+    return least_derivative(planes, f, corner_q, values, q_high, along_x, extra);
   };
   out.rho_low = std::max({least(planes.s, corner_s, true, s_extra) * width,
                           least(planes.t, corner_t, true, t_extra) * height,
