@@ -147,6 +147,51 @@ struct VisibleGroup {
 // How many groups ahead of the one set up run_batch() prefetches a mesh's vertices.
 inline constexpr std::size_t kPrefetchGroups = 4;
 
+// The corners and positions of triangles [first, first + count) into the setup lanes, lanes past
+// the end repeating the last triangle (their results are ignored); whether every lane is a
+// triangle whose indices are in range.
+[[gnu::always_inline]] inline bool fetch_group(const detail::TriangleBatch& batch,
+                                               std::size_t first, std::size_t count,
+                                               GroupCorners<Arch>& corners,
+                                               TriangleGroup<Arch>& group) {
+  constexpr std::size_t kLanes = kSetupLanes<Arch>;
+  bool all_valid = count == kLanes;
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    const std::size_t t = first + (l < count ? l : count - 1);
+    std::size_t* corner = corners.vertex[l];
+    for (int i = 0; i < 3; ++i) {
+      corner[i] = batch.indices != nullptr ? batch.indices[3 * t + i] : 3 * t + i;
+    }
+    corners.valid[l] = true;
+    for (int i = 0; i < 3; ++i) {
+      Vec2 v{0.0f, 0.0f};
+      if (corner[i] < batch.vertex_count) {
+        v = batch.vertices[corner[i]];
+      } else {
+        corners.valid[l] = false;
+        all_valid = false;
+      }
+      group.x[i][l] = v.x;
+      group.y[i][l] = v.y;
+    }
+  }
+  return all_valid;
+}
+
+// A mesh's vertices are read in the order of its indices, which the hardware prefetcher cannot
+// follow: the vertices of the group kPrefetchGroups on are fetched while the group at `first` is
+// set up and drawn, by visitors that can.
+template <class Visitor>
+[[gnu::always_inline]] inline void prefetch_ahead(const detail::TriangleBatch& batch,
+                                                  std::size_t first, Visitor& visitor) {
+  if constexpr (requires(const std::uint32_t* v) { visitor.prefetch_vertices(v, 0); }) {
+    constexpr std::size_t kLanes = kSetupLanes<Arch>;
+    constexpr std::size_t kAhead = kPrefetchGroups * kLanes;
+    if (batch.indices != nullptr && first + kAhead + kLanes <= batch.triangle_count)
+      visitor.prefetch_vertices(batch.indices + 3 * (first + kAhead), 3 * kLanes);
+  }
+}
+
 // Fetches, sets up and walks every triangle of the batch, a group of setup lanes at a time.
 // The walks (walk_block, walk_spans, walk_tiles) are kept out of line: inlined into this loop
 // (the compiler's choice with one visitor per translation unit) they ran fewer instructions but
@@ -171,35 +216,8 @@ void run_batch(const detail::TriangleBatch& batch, Visitor& visitor, RasterRepor
   for (std::size_t first = 0; first < batch.triangle_count; first += kLanes) {
     const std::size_t count =
         batch.triangle_count - first < kLanes ? batch.triangle_count - first : kLanes;
-    if constexpr (requires(const std::uint32_t* v) { visitor.prefetch_vertices(v, 0); }) {
-      // A mesh's vertices are read in the order of its indices, which the hardware prefetcher
-      // cannot follow: the vertices of the group kPrefetchGroups on are fetched while this one
-      // is set up and drawn.
-      constexpr std::size_t kAhead = kPrefetchGroups * kLanes;
-      if (batch.indices != nullptr && first + kAhead + kLanes <= batch.triangle_count)
-        visitor.prefetch_vertices(batch.indices + 3 * (first + kAhead), 3 * kLanes);
-    }
-    bool all_valid = count == kLanes;
-    for (std::size_t l = 0; l < kLanes; ++l) {
-      // Lanes past the end repeat the last triangle; their results are ignored.
-      const std::size_t t = first + (l < count ? l : count - 1);
-      std::size_t* corner = corners.vertex[l];
-      for (int i = 0; i < 3; ++i) {
-        corner[i] = batch.indices != nullptr ? batch.indices[3 * t + i] : 3 * t + i;
-      }
-      corners.valid[l] = true;
-      for (int i = 0; i < 3; ++i) {
-        Vec2 v{0.0f, 0.0f};
-        if (corner[i] < batch.vertex_count) {
-          v = batch.vertices[corner[i]];
-        } else {
-          corners.valid[l] = false;
-          all_valid = false;
-        }
-        group.x[i][l] = v.x;
-        group.y[i][l] = v.y;
-      }
-    }
+    prefetch_ahead(batch, first, visitor);
+    const bool all_valid = fetch_group(batch, first, count, corners, group);
     const std::uint32_t visible_lanes =
         setup_triangles<Arch>(group, batch.clip, batch.cull, setups, statuses, visible, reach);
     // A whole group of visible triangles with none waiting is set up and drawn where it is:
