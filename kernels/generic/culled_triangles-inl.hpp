@@ -115,6 +115,50 @@ inline DropDecision drop_decision(const Vec2* vertices, std::size_t vertex_count
   }
 }
 
+// The triangles of the lanes `undecided` (bits into the group whose indices start at
+// `corners`), decided one at a time by drop_decision(): culled ones added to `dropped`, unseen
+// ones to `unseen`.
+[[gnu::always_inline]] inline void decide_one_by_one(const Vec2* vertices, std::size_t vertex_count,
+                                                     const std::uint32_t* corners,
+                                                     std::uint32_t undecided, CullMode cull,
+                                                     const detail::SampleWindow& window,
+                                                     std::uint32_t& dropped,
+                                                     std::uint32_t& unseen) {
+  for (; undecided != 0; undecided &= undecided - 1) {
+    const int l = std::countr_zero(undecided);
+    const std::uint32_t* corner = corners + 3 * static_cast<std::size_t>(l);
+    const std::uint32_t triangle[3] = {corner[0], corner[1], corner[2]};
+    switch (drop_decision(vertices, vertex_count, triangle, cull, window)) {
+      case DropDecision::keep:
+        break;
+      case DropDecision::culled:
+        dropped |= 1u << l;
+        break;
+      case DropDecision::unseen:
+        unseen |= 1u << l;
+        break;
+    }
+  }
+}
+
+// The group's triangles [first, first + count) moved to the front of `indices` at `kept`, but
+// for the lanes `dropped`. Stored whether kept or not (no branch on the winding, which
+// alternates unpredictably); in place: `kept` never passes `first + l`, and the triangle is read
+// before it is stored.
+[[gnu::always_inline]] inline void keep_in_place(std::uint32_t* indices, std::size_t first,
+                                                 std::size_t count, std::uint32_t dropped,
+                                                 std::size_t& kept) {
+  for (std::size_t l = 0; l < count; ++l) {
+    const std::uint32_t* from = indices + 3 * (first + l);
+    const std::uint32_t a = from[0], b = from[1], c = from[2];
+    std::uint32_t* to = indices + 3 * kept;
+    to[0] = a;
+    to[1] = b;
+    to[2] = c;
+    kept += (dropped >> l) & 1u ? 0 : 1;
+  }
+}
+
 // Drops from `indices` (three per triangle, into `vertices`) every triangle set-up would cull,
 // by its winding under `cull` or for zero area after snapping, and every one it would draw with
 // no sample of `window` in its box; the others keep their order at the front.
@@ -190,35 +234,11 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
       unseen = bits_of_lanes<Arch>(exact && empty) & undecided & ~dropped;
       undecided &= ~bits_of_lanes<Arch>(exact);
     }
-    for (; undecided != 0; undecided &= undecided - 1) {
-      const int l = std::countr_zero(undecided);
-      const std::uint32_t* corner = indices + 3 * (first + static_cast<std::size_t>(l));
-      const std::uint32_t triangle[3] = {corner[0], corner[1], corner[2]};
-      switch (drop_decision(vertices, vertex_count, triangle, cull, window)) {
-        case DropDecision::keep:
-          break;
-        case DropDecision::culled:
-          dropped |= 1u << l;
-          break;
-        case DropDecision::unseen:
-          unseen |= 1u << l;
-          break;
-      }
-    }
+    decide_one_by_one(vertices, vertex_count, indices + 3 * first, undecided, cull, window, dropped,
+                      unseen);
     result.culled += static_cast<std::size_t>(std::popcount(dropped));
     result.unseen += static_cast<std::size_t>(std::popcount(unseen));
-    dropped |= unseen;
-    for (std::size_t l = 0; l < count; ++l) {
-      // Stored whether kept or not (no branch on the winding, which alternates unpredictably);
-      // in place: `kept` never passes `first + l`, and the triangle is read before it is stored.
-      const std::uint32_t* from = indices + 3 * (first + l);
-      const std::uint32_t a = from[0], b = from[1], c = from[2];
-      std::uint32_t* to = indices + 3 * kept;
-      to[0] = a;
-      to[1] = b;
-      to[2] = c;
-      kept += (dropped >> l) & 1u ? 0 : 1;
-    }
+    keep_in_place(indices, first, count, dropped | unseen, kept);
   }
   return result;
 }
