@@ -61,6 +61,25 @@ struct PlaneGroup {
   ColourPlane colour[kShadingPlanes][kLanes];  // colour, then normal planes
 };
 
+// Each lane's depth plane from its first vertex and the slopes dx, dy, and its largest depth.
+template <class Arch>
+[[gnu::always_inline]] inline void store_depth_planes(const PlaneGroupInput<Arch>& in,
+                                                      const double* dx, const double* dy,
+                                                      PlaneGroup<Arch>& out) {
+  for (std::size_t l = 0; l < kSetupLanes<Arch>; ++l) {
+    // Positions and depths came from float: converting back is exact.
+    const float z[3] = {static_cast<float>(in.z[0][l]), static_cast<float>(in.z[1][l]),
+                        static_cast<float>(in.z[2][l])};
+    out.x0[l] = static_cast<float>(in.x[0][l]);
+    out.y0[l] = static_cast<float>(in.y[0][l]);
+    out.z0[l] = z[0];
+    out.dzdx[l] = static_cast<float>(dx[l]);
+    out.dzdy[l] = static_cast<float>(dy[l]);
+    const float larger = z[0] > z[1] ? z[0] : z[1];
+    out.max_depth[l] = z[2] > larger ? z[2] : larger;
+  }
+}
+
 // Sets up the lanes of `in`: depth slopes always, colour planes when `colour_planes` (all but
 // the R, G, B, A and 1 / w planes themselves without `colour_values`: for lanes whose colour
 // is used as it is), normal planes too when `normal_planes`. With `perspective_correct`, a lane's
@@ -85,18 +104,7 @@ inline void set_up_plane_group(const PlaneGroupInput<Arch>& in, bool colour_plan
   alignas(64) double dx[kLanes], dy[kLanes];
   const D z0 = at(in.z[0]);
   slopes(at(in.z[1]) - z0, at(in.z[2]) - z0, dx, dy);
-  for (std::size_t l = 0; l < kLanes; ++l) {
-    // Positions and depths came from float: converting back is exact.
-    const float z[3] = {static_cast<float>(in.z[0][l]), static_cast<float>(in.z[1][l]),
-                        static_cast<float>(in.z[2][l])};
-    out.x0[l] = static_cast<float>(in.x[0][l]);
-    out.y0[l] = static_cast<float>(in.y[0][l]);
-    out.z0[l] = z[0];
-    out.dzdx[l] = static_cast<float>(dx[l]);
-    out.dzdy[l] = static_cast<float>(dy[l]);
-    const float larger = z[0] > z[1] ? z[0] : z[1];
-    out.max_depth[l] = z[2] > larger ? z[2] : larger;
-  }
+  store_depth_planes(in, dx, dy, out);
   if (!colour_planes) return;
 
   const D w[3] = {at(in.w[0]), at(in.w[1]), at(in.w[2])};
