@@ -13,7 +13,6 @@
 // (schedule_model.hpp).
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -22,42 +21,31 @@
 #include "benchmarks.hpp"
 #include "edgewise/edgewise.hpp"
 #include "mesh_scenes.hpp"
+#include "phase_profile.hpp"
 #include "schedule_model.hpp"
 
 namespace edgewise::bench {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // The speed-up on `threads` threads that a serial share `s` of the one-thread time allows.
 double amdahl_bound(double s, double threads) {
   return 1.0 / (s + (1.0 - s) / threads);
 }
 
+// Draws profiled after the timed ones.
+constexpr int kProfiledDraws = 20;
+
 void mesh_draw(benchmark::State& state, Isa isa, const MeshScene* scene, std::size_t threads) {
   const DrawMesh mesh = draw_mesh(*scene);
   DrawOptions options = mesh_options(isa, *scene);
   options.threads = threads;
-  // On several threads, the time the draw's tasks take, from the calling thread's side.
-  Clock::duration in_tasks{}, drawing{};
-  if (threads != 1) {
-    const TaskExecutor builtin = builtin_executor(threads);
-    options.executor = [&in_tasks, builtin](std::size_t count,
-                                            const std::function<void(std::size_t)>& task) {
-      const Clock::time_point start = Clock::now();
-      builtin(count, task);
-      in_tasks += Clock::now() - start;
-    };
-  }
   Framebuffer target(kWidth, kHeight);
   DrawReport last;
   for (auto _ : state) {
     state.PauseTiming();
     target.clear(kMeshClearColor, kMeshClearDepth);
     state.ResumeTiming();
-    const Clock::time_point start = Clock::now();
     last = draw(target, mesh, options);
-    drawing += Clock::now() - start;
     benchmark::DoNotOptimize(target.color_tiles());
     benchmark::ClobberMemory();
   }
@@ -74,20 +62,51 @@ void mesh_draw(benchmark::State& state, Isa isa, const MeshScene* scene, std::si
   state.counters["culled"] =
       last.triangles > 0 ? double(last.culled) / double(last.triangles) : 0.0;
   if (threads != 1 && iterations > 0) {
-    const double serial_seconds =
-        std::chrono::duration<double>(drawing - in_tasks).count() / iterations;
     const auto prepare = [&] { target.clear(kMeshClearColor, kMeshClearDepth); };
     const auto draw_with = [&](const DrawOptions& with) { draw(target, mesh, with); };
     DrawOptions one = options;
     one.threads = 1;
-    one.executor = {};
     const double one_thread = median_seconds(prepare, [&] { draw_with(one); });
-    const double share = serial_seconds / one_thread;
+    // Where each thread's time goes (phase_profile.hpp), over draws of their own: the built-in
+    // executor wrapped to time each task (so these draws do not call its threads up early).
+    PhaseProfile profile(threads != 0 ? threads : default_thread_count());
+    DrawOptions profiled = options;
+    profiled.executor = profile.executor();
+    for (int i = 0; i < kProfiledDraws; ++i) {
+      prepare();
+      profile.begin_draw();
+      draw_with(profiled);
+      profile.end_draw();
+    }
+    const PhaseProfile::Shares shares = profile.shares();
+    const double share = shares.serial * shares.wall / one_thread;
     state.counters["serial_share"] = share;
     state.counters["amdahl16"] = amdahl_bound(share, 16.0);
     state.counters["amdahl64"] = amdahl_bound(share, 64.0);
-    state.counters["model16"] = one_thread / modelled_seconds(options, 16, prepare, draw_with);
+    state.counters["share_busy"] = shares.busy;
+    state.counters["share_waking"] = shares.waking;
+    state.counters["share_between"] = shares.between;
+    state.counters["share_tail"] = shares.tail;
+    state.counters["share_serial"] = shares.serial;
+    state.counters["work_ratio"] = shares.work / one_thread;
+    state.counters["phases"] = shares.phases;
+    state.counters["tasks"] = shares.tasks;
+    std::vector<double> model_work;
+    state.counters["model16"] =
+        one_thread / modelled_seconds(options, 16, prepare, draw_with, &model_work);
     state.counters["model64"] = one_thread / modelled_seconds(options, 64, prepare, draw_with);
+    double model_total = 0.0;
+    for (double work : model_work)
+      model_total += work;
+    state.counters["model_work_ratio"] = model_total / one_thread;
+    // Each phase's wall-clock share, and its tasks' time on these threads over their time one
+    // after the other (the model's, made for 16 threads: compare on 16 threads).
+    for (std::size_t p = 0; p < shares.phase_walls.size(); ++p) {
+      const std::string phase = "phase" + std::to_string(p + 1);
+      state.counters[phase] = shares.phase_walls[p];
+      if (p < model_work.size() && model_work[p] > 0.0)
+        state.counters[phase + "_work"] = shares.phase_work[p] / model_work[p];
+    }
   }
 }
 

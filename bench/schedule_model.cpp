@@ -48,7 +48,8 @@ double median_seconds(const std::function<void()>& prepare, const std::function<
 
 double modelled_seconds(DrawOptions options, std::size_t threads,
                         const std::function<void()>& prepare,
-                        const std::function<void(const DrawOptions&)>& draw) {
+                        const std::function<void(const DrawOptions&)>& draw,
+                        std::vector<double>* phase_work) {
   std::vector<std::vector<double>> phases;
   options.threads = threads;
   options.executor = [&phases](std::size_t count, const std::function<void(std::size_t)>& task) {
@@ -59,20 +60,24 @@ double modelled_seconds(DrawOptions options, std::size_t threads,
       times[i] = seconds_since(start);
     }
   };
-  std::vector<double> seconds;
+  std::vector<double> seconds, works;
   for (int i = 0; i < 5; ++i) {
     prepare();
     phases.clear();
     const Clock::time_point start = Clock::now();
     draw(options);
     double modelled = seconds_since(start);
-    for (const std::vector<double>& phase : phases) {
-      for (double task : phase)
+    if (works.size() < phases.size()) works.resize(phases.size(), 0.0);
+    for (std::size_t p = 0; p < phases.size(); ++p) {
+      for (double task : phases[p]) {
         modelled -= task;
-      modelled += makespan(phase, threads);
+        works[p] += task / 5.0;
+      }
+      modelled += makespan(phases[p], threads);
     }
     seconds.push_back(modelled);
   }
+  if (phase_work != nullptr) *phase_work = works;
   return median_of_five(seconds);
 }
 

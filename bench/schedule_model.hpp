@@ -22,8 +22,11 @@ double makespan(const std::vector<double>& tasks, std::size_t workers);
 double median_seconds(const std::function<void()>& prepare, const std::function<void()>& draw);
 
 // The modelled time of `draw` with `options` made for `threads` threads: the median of five.
+// `phase_work`, when given, receives each phase's tasks' time added up, in seconds (the mean
+// over the five runs), phases in the order the draw runs them.
 double modelled_seconds(DrawOptions options, std::size_t threads,
                         const std::function<void()>& prepare,
-                        const std::function<void(const DrawOptions&)>& draw);
+                        const std::function<void(const DrawOptions&)>& draw,
+                        std::vector<double>* phase_work = nullptr);
 
 }  // namespace edgewise::bench

@@ -96,14 +96,14 @@ template <class Arch>
 
 // What the pass does with the triangle of `corner`: set-up's decisions in its exact arithmetic
 // (classify_triangle(), the binning's), kept when an index is out of range or a vertex is not
-// snapped into the band, for set-up to report.
+// snapped into the band, for set-up to report. `box` is the box of a triangle set-up draws
+// (empty for any other).
 inline DropDecision drop_decision(const Vec2* vertices, std::size_t vertex_count,
                                   const std::uint32_t (&corner)[3], CullMode cull,
-                                  const detail::SampleWindow& window) {
+                                  const detail::SampleWindow& window, PixelRect& box) {
   if (corner[0] >= vertex_count || corner[1] >= vertex_count || corner[2] >= vertex_count)
     return DropDecision::keep;
   const Vec2 v[3] = {vertices[corner[0]], vertices[corner[1]], vertices[corner[2]]};
-  PixelRect box{};
   switch (detail::classify_triangle(v, cull, window.clip, box, window.reach)) {
     case TriangleStatus::culled_zero_area:
     case TriangleStatus::culled_winding:
@@ -111,25 +111,27 @@ inline DropDecision drop_decision(const Vec2* vertices, std::size_t vertex_count
     case TriangleStatus::drawn:
       return box.empty() ? DropDecision::unseen : DropDecision::keep;
     default:
+      box = PixelRect{};
       return DropDecision::keep;
   }
 }
 
 // The triangles of the lanes `undecided` (bits into the group whose indices start at
 // `corners`), decided one at a time by drop_decision(): culled ones added to `dropped`, unseen
-// ones to `unseen`.
-[[gnu::always_inline]] inline void decide_one_by_one(const Vec2* vertices, std::size_t vertex_count,
-                                                     const std::uint32_t* corners,
-                                                     std::uint32_t undecided, CullMode cull,
-                                                     const detail::SampleWindow& window,
-                                                     std::uint32_t& dropped,
-                                                     std::uint32_t& unseen) {
+// ones to `unseen`; with a grid, a kept one's bin to lane_bins[lane].
+[[gnu::always_inline]] inline void decide_one_by_one(
+    const Vec2* vertices, std::size_t vertex_count, const std::uint32_t* corners,
+    std::uint32_t undecided, CullMode cull, const detail::SampleWindow& window,
+    const detail::BinGrid* grid, std::uint32_t* lane_bins, std::uint32_t& dropped,
+    std::uint32_t& unseen) {
   for (; undecided != 0; undecided &= undecided - 1) {
     const int l = std::countr_zero(undecided);
     const std::uint32_t* corner = corners + 3 * static_cast<std::size_t>(l);
     const std::uint32_t triangle[3] = {corner[0], corner[1], corner[2]};
-    switch (drop_decision(vertices, vertex_count, triangle, cull, window)) {
+    PixelRect box{};
+    switch (drop_decision(vertices, vertex_count, triangle, cull, window, box)) {
       case DropDecision::keep:
+        if (grid != nullptr) lane_bins[l] = detail::single_bin_of(*grid, box);
         break;
       case DropDecision::culled:
         dropped |= 1u << l;
@@ -142,12 +144,13 @@ inline DropDecision drop_decision(const Vec2* vertices, std::size_t vertex_count
 }
 
 // The group's triangles [first, first + count) moved to the front of `indices` at `kept`, but
-// for the lanes `dropped`. Stored whether kept or not (no branch on the winding, which
-// alternates unpredictably); in place: `kept` never passes `first + l`, and the triangle is read
-// before it is stored.
+// for the lanes `dropped`, with their lane_bins to `bins` when it is not null. Stored whether
+// kept or not (no branch on the winding, which alternates unpredictably); in place: `kept` never
+// passes `first + l`, and the triangle is read before it is stored.
 [[gnu::always_inline]] inline void keep_in_place(std::uint32_t* indices, std::size_t first,
                                                  std::size_t count, std::uint32_t dropped,
-                                                 std::size_t& kept) {
+                                                 const std::uint32_t* lane_bins,
+                                                 std::uint32_t* bins, std::size_t& kept) {
   for (std::size_t l = 0; l < count; ++l) {
     const std::uint32_t* from = indices + 3 * (first + l);
     const std::uint32_t a = from[0], b = from[1], c = from[2];
@@ -155,18 +158,21 @@ inline DropDecision drop_decision(const Vec2* vertices, std::size_t vertex_count
     to[0] = a;
     to[1] = b;
     to[2] = c;
+    if (bins != nullptr) bins[kept] = lane_bins[l];
     kept += (dropped >> l) & 1u ? 0 : 1;
   }
 }
 
 // Drops from `indices` (three per triangle, into `vertices`) every triangle set-up would cull,
 // by its winding under `cull` or for zero area after snapping, and every one it would draw with
-// no sample of `window` in its box; the others keep their order at the front.
+// no sample of `window` in its box; the others keep their order at the front, with their bins
+// in `output` when it has a grid (over the window's clip rectangle).
 template <class Arch>
 detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::size_t vertex_count,
                                                    std::uint32_t* indices, std::size_t triangles,
                                                    CullMode cull,
-                                                   const detail::SampleWindow& window) {
+                                                   const detail::SampleWindow& window,
+                                                   const detail::BinOutput& output) {
   using Floats = xsimd::batch<float, Arch>;
   using Ints = xsimd::batch<std::int32_t, Arch>;
   constexpr std::size_t kLanes = Floats::size;
@@ -190,17 +196,36 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
   const Floats clip_y0(static_cast<float>(window.clip.y0));
   const Floats clip_x1(static_cast<float>(window.clip.x1 - 1));
   const Floats clip_y1(static_cast<float>(window.clip.y1 - 1));
-  const auto holds_sample = [&](const Floats(&v)[3], Floats first, Floats last) {
+  // The first and last pixels of the box on one axis: those with a sample within the vertices'
+  // bounds, in the clip rectangle (from `first` to `last`).
+  const auto box_span = [&](const Floats(&v)[3], Floats first, Floats last, Floats& from,
+                            Floats& to) {
     const Floats lo = xsimd::min(xsimd::min(v[0], v[1]), v[2]);
     const Floats hi = xsimd::max(xsimd::max(v[0], v[1]), v[2]);
-    return xsimd::max(xsimd::ceil(lo - to_first), first) <=
-           xsimd::min(xsimd::floor(hi - to_last), last);
+    from = xsimd::max(xsimd::ceil(lo - to_first), first);
+    to = xsimd::min(xsimd::floor(hi - to_last), last);
+  };
+  // A box's bin (single_bin_of()), or kSeveralBins as -1.
+  const detail::BinGrid* grid = output.grid;
+  const int width_shift = grid != nullptr ? grid->width_shift : 0;
+  const int height_shift = grid != nullptr ? grid->height_shift : 0;
+  const Ints first_column(grid != nullptr ? grid->first_column : 0);
+  const Ints first_row(grid != nullptr ? grid->first_row : 0);
+  const Ints columns(grid != nullptr ? grid->columns : 0);
+  const auto bin_of_box = [&](Floats x0, Floats x1, Floats y0, Floats y1) {
+    const Ints column0 = xsimd::batch_cast<std::int32_t>(x0) >> width_shift;
+    const Ints column1 = xsimd::batch_cast<std::int32_t>(x1) >> width_shift;
+    const Ints row0 = xsimd::batch_cast<std::int32_t>(y0) >> height_shift;
+    const Ints row1 = xsimd::batch_cast<std::int32_t>(y1) >> height_shift;
+    const Ints bin = (row0 - first_row) * columns + (column0 - first_column);
+    return xsimd::select(column0 == column1 && row0 == row1, bin, Ints(-1));
   };
   detail::DroppedTriangles result;
   std::size_t& kept = result.kept;
   for (std::size_t first = 0; first < triangles; first += kLanes) {
     const std::size_t count = triangles - first < kLanes ? triangles - first : kLanes;
     std::uint32_t dropped = 0, unseen = 0, undecided = (1u << count) - 1;
+    alignas(64) std::uint32_t lane_bins[kLanes];
     if (lanes_reach && vertex_count != 0) {
       Ints v[3];
       if (count == kLanes) {
@@ -228,17 +253,24 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
       const auto facing_away = cull == CullMode::clockwise           ? p > q
                                : cull == CullMode::counter_clockwise ? p < q
                                                                      : Floats(0.0f) != Floats(0.0f);
-      const auto empty = !(holds_sample(x, clip_x0, clip_x1) && holds_sample(y, clip_y0, clip_y1));
+      Floats x0, x1, y0, y1;
+      box_span(x, clip_x0, clip_x1, x0, x1);
+      box_span(y, clip_y0, clip_y1, y0, y1);
+      const auto empty = !(x0 <= x1 && y0 <= y1);
+      // Lanes that are not exact, or not kept, are decided below or never stored.
+      if (grid != nullptr) {
+        bin_of_box(x0, x1, y0, y1).store_aligned(reinterpret_cast<std::int32_t*>(lane_bins));
+      }
       // Lanes past the end (bits from `count` on) are left out of the counts.
       dropped = bits_of_lanes<Arch>(exact && facing_away) & undecided;
       unseen = bits_of_lanes<Arch>(exact && empty) & undecided & ~dropped;
       undecided &= ~bits_of_lanes<Arch>(exact);
     }
-    decide_one_by_one(vertices, vertex_count, indices + 3 * first, undecided, cull, window, dropped,
-                      unseen);
+    decide_one_by_one(vertices, vertex_count, indices + 3 * first, undecided, cull, window, grid,
+                      lane_bins, dropped, unseen);
     result.culled += static_cast<std::size_t>(std::popcount(dropped));
     result.unseen += static_cast<std::size_t>(std::popcount(unseen));
-    keep_in_place(indices, first, count, dropped | unseen, kept);
+    keep_in_place(indices, first, count, dropped | unseen, lane_bins, output.bins, kept);
   }
   return result;
 }

@@ -26,8 +26,10 @@ void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeC
 
 detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
                                                std::uint32_t* indices, std::size_t triangles,
-                                               CullMode cull, const detail::SampleWindow& window) {
-  return drop_culled_triangle_list<Arch>(vertices, vertex_count, indices, triangles, cull, window);
+                                               CullMode cull, const detail::SampleWindow& window,
+                                               const detail::BinOutput& output) {
+  return drop_culled_triangle_list<Arch>(vertices, vertex_count, indices, triangles, cull, window,
+                                         output);
 }
 
 void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {

@@ -190,14 +190,40 @@ bool box_holds_sample(const SnappedTriangle& t, const detail::SampleWindow& wind
          axis_meets(t.y, window.clip.y0, window.clip.y1);
 }
 
+// The largest integer at most a / 256.
+std::int64_t floor_fixed_to_pixels(std::int64_t a) {
+  const std::int64_t q = a / 256;
+  return q * 256 > a ? q - 1 : q;
+}
+
+// The pixels of the window's clip rectangle with a sample between the snapped triangle's
+// smallest and largest coordinates on both axes (from the first whose last sample reaches lo to
+// the last whose first sample is within hi), as set-up bounds its walk.
+PixelRect sample_box(const SnappedTriangle& t, const detail::SampleWindow& window) {
+  const auto axis = [&](const std::int64_t(&v)[3], std::int32_t first, std::int32_t end,
+                        std::int32_t& from, std::int32_t& to) {
+    const std::int64_t lo = std::min({v[0], v[1], v[2]}), hi = std::max({v[0], v[1], v[2]});
+    from = static_cast<std::int32_t>(
+        std::max<std::int64_t>(ceil_fixed_to_pixels(lo - 128 - window.reach), first));
+    to = static_cast<std::int32_t>(
+        std::min<std::int64_t>(floor_fixed_to_pixels(hi - 128 + window.reach) + 1, end));
+  };
+  PixelRect box{};
+  axis(t.x, window.clip.x0, window.clip.x1, box.x0, box.x1);
+  axis(t.y, window.clip.y0, window.clip.y1, box.y0, box.y1);
+  return box;
+}
+
 }  // namespace
 
 detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
                                                std::uint32_t* indices, std::size_t triangles,
-                                               CullMode cull, const detail::SampleWindow& window) {
+                                               CullMode cull, const detail::SampleWindow& window,
+                                               const detail::BinOutput& output) {
   detail::DroppedTriangles result;
   for (std::size_t t = 0; t < triangles; ++t) {
     const std::uint32_t corner[3] = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
+    std::uint32_t bin = detail::kSeveralBins;
     if (corner[0] < vertex_count && corner[1] < vertex_count && corner[2] < vertex_count) {
       SnappedTriangle snapped;
       const TriangleStatus status = snap_and_classify(vertices[corner[0]], vertices[corner[1]],
@@ -210,9 +236,12 @@ detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t
         ++result.unseen;
         continue;
       }
+      if (status == TriangleStatus::drawn && output.grid != nullptr)
+        bin = detail::single_bin_of(*output.grid, sample_box(snapped, window));
     }
     for (int i = 0; i < 3; ++i)
       indices[3 * result.kept + i] = corner[i];
+    if (output.grid != nullptr) output.bins[result.kept] = bin;
     ++result.kept;
   }
   return result;

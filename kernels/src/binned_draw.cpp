@@ -350,12 +350,14 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
     part.report = DrawReport{};
     part.report.triangles = last - first;
     ScreenMesh& screen = screens[range];
-    screen = map_to_screen(part, target, triangle_range(mesh, options, first, last), options);
+    GrowableArray<std::uint32_t> bins;
+    screen = map_to_screen(part, target, triangle_range(mesh, options, first, last), options, &grid,
+                           &bins);
     vertex_reports[range] = part.report;
     const TriangleBatch batch = screen_triangles(
         target, screen, screen.indices.data(), screen.indices.size() / 3, call.clip, options.cull);
-    bin_screen_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),
-                         range_reports[range]);
+    bin_screen_triangles(batch, 0, batch.triangle_count, grid, bins.data(),
+                         lists.range_lists(range), range_reports[range]);
   });
   DrawReport& report = call.report;
   add_vertex_counts(report, vertex_reports);
@@ -451,12 +453,14 @@ void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh&
   std::vector<RasterReport> range_reports(ranges);
   const auto bin_part = [&](const ScreenMesh& all, std::size_t range) {
     ScreenMesh& part = parts[range];
+    GrowableArray<std::uint32_t> bins(part.indices.size() / 3);
     drop_culled_triangles(*call.kernels, all, part, options.cull,
-                          sample_window(call.clip, call.samples), vertex_reports[range]);
+                          sample_window(call.clip, call.samples), vertex_reports[range],
+                          {&grid, bins.data()});
     const TriangleBatch batch = screen_triangles(target, all, part.indices.data(),
                                                  part.indices.size() / 3, call.clip, options.cull);
-    bin_screen_triangles(batch, 0, batch.triangle_count, grid, lists.range_lists(range),
-                         range_reports[range]);
+    bin_screen_triangles(batch, 0, batch.triangle_count, grid, bins.data(),
+                         lists.range_lists(range), range_reports[range]);
   };
   call.workers.run(ranges, [&](std::size_t range) {
     const std::size_t first = range * triangles / ranges, last = (range + 1) * triangles / ranges;

@@ -160,6 +160,7 @@ CoverageCount count_coverage(std::span<const Vec2> vertices, std::span<const std
   // Bin lists hold 32-bit corner indices.
   if (workers.threads > 1 && detail::BinGrid(batch.clip, workers.threads).count() > 1 &&
       vertices.size() <= UINT32_MAX && 3 * batch.triangle_count <= UINT32_MAX) {
+    workers.call_up();
     return count_in_bins(batch, kernels, workers);
   }
   CoverageCount count;

@@ -153,6 +153,7 @@ DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& op
   detail::DrawCall call = detail::prepare_draw(target, mesh, options);
   if (!call.has_work()) return call.report;
   if (call.binned()) {
+    call.workers.call_up();
     if (mesh.indices.empty()) {
       detail::draw_in_ranges(call, target, mesh, options);
     } else {

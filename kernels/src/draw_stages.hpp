@@ -29,9 +29,10 @@ DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const Dra
 
 // The vertex stage (vertex_stage.cpp, through the ISA's kernel): transform, clipping, screen
 // mapping and snapping of every triangle, and the culling of those set-up would cull, counted
-// into call.report.
+// into call.report. Given a grid, `bins` receives the bin of each screen triangle (BinOutput).
 ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
-                         const DrawOptions& options);
+                         const DrawOptions& options, const BinGrid* grid = nullptr,
+                         GrowableArray<std::uint32_t>* bins = nullptr);
 
 // The screen mesh through the ISA's shading kernel: setup, coverage, depth test and shading;
 // in bins on the call's threads when it is binned().

@@ -26,7 +26,8 @@ void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t*
                         DrawReport& report);
 detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
                                                std::uint32_t* indices, std::size_t triangles,
-                                               CullMode cull, const detail::SampleWindow& window);
+                                               CullMode cull, const detail::SampleWindow& window,
+                                               const detail::BinOutput& output);
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts);
 
 // resolve.cpp

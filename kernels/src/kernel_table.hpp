@@ -10,6 +10,7 @@
 #include "edgewise/camera.hpp"
 #include "edgewise/coverage.hpp"
 #include "edgewise/pixel_area.hpp"
+#include "bin_grid.hpp"
 #include "isa_list.hpp"
 #include "resolve_call.hpp"
 #include "sample_kernels.hpp"
@@ -47,10 +48,12 @@ struct KernelTable {
   // Drops from `indices` (three per triangle into `vertices`) the triangles set-up would cull
   // (zero area after snapping, or facing away under `cull`) and those it would draw with no
   // sample of `window` in their box; the rest keep their order. A triangle with a bad index or a
-  // vertex outside the guard band stays, for set-up to report.
+  // vertex outside the guard band stays, for set-up to report. With a grid in `output`, also
+  // each kept triangle's bin (BinOutput).
   DroppedTriangles (*drop_culled_triangles)(const Vec2* vertices, std::size_t vertex_count,
                                             std::uint32_t* indices, std::size_t triangles,
-                                            CullMode cull, const SampleWindow& window);
+                                            CullMode cull, const SampleWindow& window,
+                                            const BinOutput& output);
   void (*shade)(const ShadeBatch& batch, RasterReport& report, ShadeCounts& counts);
   // Resolving (resolve.hpp): the box filter at factor 1, output rows [8 first, 8 last); tent and
   // Mitchell, output rows [first, last).

@@ -1,27 +1,27 @@
-// Thread counts and the built-in executor: oneTBB when the library is built with it
-// (EDGEWISE_WITH_TBB), otherwise one std::thread per worker for each run.
+// Thread counts and the built-in executor: a crew of helper threads (task_crew.hpp), started by
+// oneTBB when the library is built with it (EDGEWISE_WITH_TBB), otherwise plain std::threads.
 #include "parallel.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdlib>
+#include <exception>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
-#include <algorithm>
+#include "task_crew.hpp"
 
 #if EDGEWISE_HAVE_TBB
-#include <map>
-#include <memory>
-#include <mutex>
-
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 #else
-#include <atomic>
-#include <exception>
 #include <thread>
 #include <vector>
 #endif
@@ -55,40 +55,82 @@ std::size_t builtin_concurrency() {
   return std::min(kMaxThreads, static_cast<std::size_t>(tbb::info::default_concurrency()));
 }
 
-// One arena per thread count, made on first use and kept: making one per call costs more than
-// a small draw. Arenas may be entered by many threads at once.
-tbb::task_arena& arena_for(std::size_t threads) {
+// One arena and one crew per thread count, made on first use and kept: making them per call
+// costs more than a small draw. Never destroyed: a crew's helpers may still be waiting, inside
+// the arena, when the process exits.
+struct Builtin {
+  explicit Builtin(std::size_t slots)
+      : arena(static_cast<int>(slots)), crew(slots - 1, [this](std::function<void()> helper) {
+          arena.enqueue(std::move(helper));
+        }) {
+    arena.initialize();
+  }
+  tbb::task_arena arena;
+  TaskCrew crew;
+};
+
+Builtin& builtin_for(std::size_t threads) {
   static std::mutex mutex;
-  static std::map<std::size_t, std::unique_ptr<tbb::task_arena>> arenas;
+  static auto* builtins = new std::map<std::size_t, std::unique_ptr<Builtin>>;
   const std::lock_guard lock(mutex);
-  std::unique_ptr<tbb::task_arena>& arena = arenas[threads];
+  std::unique_ptr<Builtin>& builtin = (*builtins)[threads];
   // More slots than oneTBB has workers would only make it print a warning.
-  const std::size_t slots = std::min(threads, builtin_concurrency());
-  if (!arena) arena = std::make_unique<tbb::task_arena>(static_cast<int>(slots));
-  return *arena;
+  if (!builtin) builtin = std::make_unique<Builtin>(std::min(threads, builtin_concurrency()));
+  return *builtin;
 }
 
-void run_builtin(std::size_t threads, std::size_t count,
-                 const std::function<void(std::size_t)>& task) {
-  arena_for(threads).execute([&] {
-    // One task per index: bins differ a lot in work, so each is scheduled on its own.
+// When another thread holds the crew: the arena's threads, each taking indices in order from
+// one counter until none is left.
+void run_in_arena(tbb::task_arena& arena, std::size_t count,
+                  const std::function<void(std::size_t)>& task) {
+  const auto loops =
+      std::min<std::size_t>(count, static_cast<std::size_t>(arena.max_concurrency()));
+  arena.execute([&] {
+    std::atomic<std::size_t> next{0};
     tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, count, 1),
-        [&](const tbb::blocked_range<std::size_t>& range) {
-          for (std::size_t i = range.begin(); i != range.end(); ++i)
+        tbb::blocked_range<std::size_t>(0, loops, 1),
+        [&](const tbb::blocked_range<std::size_t>&) {
+          for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < count;)
             task(i);
         },
         tbb::simple_partitioner());
   });
+}
+
+void run_builtin(std::size_t threads, std::size_t count,
+                 const std::function<void(std::size_t)>& task) {
+  Builtin& builtin = builtin_for(threads);
+  static const bool no_crew = std::getenv("EW_NO_CREW") != nullptr;
+  if (no_crew || !builtin.crew.run(count, task)) run_in_arena(builtin.arena, count, task);
+}
+
+void call_up_builtin(std::size_t threads) {
+  static const bool no_crew = std::getenv("EW_NO_CREW") != nullptr;
+  if (!no_crew) builtin_for(threads).crew.call_up();
 }
 #else
 std::size_t builtin_concurrency() {
   return std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kMaxThreads);
 }
 
-// Without oneTBB: threads - 1 helpers and the calling thread take indices from one counter.
-void run_builtin(std::size_t threads, std::size_t count,
-                 const std::function<void(std::size_t)>& task) {
+// Without oneTBB: a crew of plain threads per thread count, made on first use and kept (never
+// destroyed: its helpers may still be waiting when the process exits).
+TaskCrew& crew_for(std::size_t threads) {
+  static std::mutex mutex;
+  static auto* crews = new std::map<std::size_t, std::unique_ptr<TaskCrew>>;
+  const std::lock_guard lock(mutex);
+  std::unique_ptr<TaskCrew>& crew = (*crews)[threads];
+  if (!crew) {
+    crew = std::make_unique<TaskCrew>(
+        threads - 1, [](std::function<void()> helper) { std::thread(std::move(helper)).detach(); });
+  }
+  return *crew;
+}
+
+// When another thread holds the crew: threads - 1 threads started for this call and the calling
+// thread take indices from one counter.
+void run_on_new_threads(std::size_t threads, std::size_t count,
+                        const std::function<void(std::size_t)>& task) {
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::atomic<bool> failed{false};
@@ -111,6 +153,15 @@ void run_builtin(std::size_t threads, std::size_t count,
     helper.join();
   if (failure) std::rethrow_exception(failure);
 }
+
+void run_builtin(std::size_t threads, std::size_t count,
+                 const std::function<void(std::size_t)>& task) {
+  if (!crew_for(threads).run(count, task)) run_on_new_threads(threads, count, task);
+}
+
+void call_up_builtin(std::size_t threads) {
+  crew_for(threads).call_up();
+}
 #endif
 
 }  // namespace
@@ -125,6 +176,10 @@ void Workers::run(std::size_t count, const std::function<void(std::size_t)>& tas
   } else {
     run_builtin(threads, count, task);
   }
+}
+
+void Workers::call_up() const {
+  if (executor == nullptr && threads > 1) call_up_builtin(threads);
 }
 
 Workers resolve_workers(std::size_t threads, const TaskExecutor& executor, const char* caller) {

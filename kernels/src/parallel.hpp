@@ -15,6 +15,9 @@ struct Workers {
 
   // Runs task(0) .. task(count - 1) on these workers and returns when all have finished.
   void run(std::size_t count, const std::function<void(std::size_t)>& task) const;
+  // Wakes the built-in executor's threads (task_crew.hpp) and returns at once: a call makes
+  // it first, so that they wake while it prepares its first run().
+  void call_up() const;
 };
 
 // `threads` 0 means default_thread_count(); throws std::invalid_argument above kMaxThreads.

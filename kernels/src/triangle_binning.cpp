@@ -20,34 +20,6 @@ ListPool& list_pool() {
 
 }  // namespace
 
-BinGrid::BinGrid(const PixelRect& clip_rect, int width_bits, int height_bits)
-    : clip(clip_rect), width_shift(width_bits), height_shift(height_bits) {
-  if (clip.empty()) return;
-  // clip_rect() keeps the clip rectangle within the target: no negative coordinates.
-  first_column = clip.x0 >> width_shift;
-  first_row = clip.y0 >> height_shift;
-  columns = ((clip.x1 - 1) >> width_shift) - first_column + 1;
-  rows = ((clip.y1 - 1) >> height_shift) - first_row + 1;
-}
-
-BinGrid::BinGrid(const PixelRect& clip_rect, std::size_t threads, int samples) : clip(clip_rect) {
-  for (const auto& size : kBinSizes) {
-    *this = BinGrid(clip_rect, size[0], size[1]);
-    const std::size_t bytes = (std::size_t{8} * static_cast<std::size_t>(samples))
-                              << (size[0] + size[1]);
-    if (samples > 1 && bytes > kMultisampleBinBytes) continue;
-    if (count() >= kBinsPerThread * threads) break;
-  }
-}
-
-PixelRect BinGrid::rect(std::size_t bin) const {
-  const std::int32_t column = first_column + static_cast<std::int32_t>(bin % columns);
-  const std::int32_t row = first_row + static_cast<std::int32_t>(bin / columns);
-  return {std::max(clip.x0, column << width_shift), std::max(clip.y0, row << height_shift),
-          std::min(clip.x1, (column + 1) << width_shift),
-          std::min(clip.y1, (row + 1) << height_shift)};
-}
-
 TriangleStatus classify_triangle(const Vec2 vertices[3], CullMode cull, const PixelRect& clip,
                                  PixelRect& box, std::int32_t sample_reach) {
   // setup_triangles' decisions, one triangle at a time, in its exact arithmetic, without a
@@ -222,31 +194,51 @@ void bin_triangles(const TriangleBatch& batch, std::size_t first, std::size_t la
   }
 }
 
+// Triangle t of bin_screen_triangles().
+[[gnu::always_inline]] inline void bin_screen_triangle(const TriangleBatch& batch, std::size_t t,
+                                                       const BinGrid& grid, CornerList* lists,
+                                                       RasterReport& report) {
+  std::uint32_t corner[3];
+  if (!fetch_corners(batch, t, corner)) {
+    count_not_drawn(report, t, TriangleStatus::error_bad_index);
+    return;
+  }
+  const Vec2 v[3] = {batch.vertices[corner[0]], batch.vertices[corner[1]],
+                     batch.vertices[corner[2]]};
+  const std::ptrdiff_t bin = single_bin(grid, v, batch.samples.size() > 1);
+  if (bin >= 0) {  // its status is counted by the bin's kernel call
+    lists[bin].append(corner);
+    return;
+  }
+  PixelRect box{};
+  const TriangleStatus status =
+      classify_triangle(v, batch.cull, grid.clip, box, sample_reach(batch));
+  if (status != TriangleStatus::drawn) {
+    count_not_drawn(report, t, status);
+    return;
+  }
+  ++report.drawn;
+  if (!box.empty()) append_to_bins(grid, lists, box, corner);
+}
+
 void bin_screen_triangles(const TriangleBatch& batch, std::size_t first, std::size_t last,
                           const BinGrid& grid, CornerList* lists, RasterReport& report) {
   report.triangles += last - first;
+  for (std::size_t t = first; t < last; ++t)
+    bin_screen_triangle(batch, t, grid, lists, report);
+}
+
+void bin_screen_triangles(const TriangleBatch& batch, std::size_t first, std::size_t last,
+                          const BinGrid& grid, const std::uint32_t* bins, CornerList* lists,
+                          RasterReport& report) {
+  report.triangles += last - first;
   for (std::size_t t = first; t < last; ++t) {
-    std::uint32_t corner[3];
-    if (!fetch_corners(batch, t, corner)) {
-      count_not_drawn(report, t, TriangleStatus::error_bad_index);
+    if (bins[t] == kSeveralBins) {
+      bin_screen_triangle(batch, t, grid, lists, report);
       continue;
     }
-    const Vec2 v[3] = {batch.vertices[corner[0]], batch.vertices[corner[1]],
-                       batch.vertices[corner[2]]};
-    const std::ptrdiff_t bin = single_bin(grid, v, batch.samples.size() > 1);
-    if (bin >= 0) {  // its status is counted by the bin's kernel call
-      lists[bin].append(corner);
-      continue;
-    }
-    PixelRect box{};
-    const TriangleStatus status =
-        classify_triangle(v, batch.cull, grid.clip, box, sample_reach(batch));
-    if (status != TriangleStatus::drawn) {
-      count_not_drawn(report, t, status);
-      continue;
-    }
-    ++report.drawn;
-    if (!box.empty()) append_to_bins(grid, lists, box, corner);
+    // Drawn (drop_culled_triangles() decided it): the bin's kernel call counts it.
+    lists[bins[t]].append(batch.indices + 3 * t);
   }
 }
 

@@ -9,41 +9,10 @@
 #include <vector>
 
 #include "edgewise/coverage.hpp"
+#include "bin_grid.hpp"
 #include "kernel_table.hpp"
 
 namespace edgewise::detail {
-
-// The bins over a clip rectangle. Bins are 2^width_shift x 2^height_shift pixels, at least 8x8
-// and aligned to multiples of their size, so every 8x8 tile (and its depth bound) lies in
-// exactly one bin; bin (column, row) is the clip rectangle within
-// [(first_column + column) << width_shift, ...) x [(first_row + row) << height_shift, ...).
-struct BinGrid {
-  PixelRect clip;
-  int width_shift = 0, height_shift = 0;
-  std::int32_t first_column = 0, first_row = 0, columns = 0, rows = 0;
-
-  // The largest bins of kBinSizes that still give every thread kBinsPerThread of them (the
-  // smallest when none does); measured in docs/design/threads.md. For a multisampled target
-  // (`samples` > 1), also no larger than keeps a bin's colour and depth within
-  // kMultisampleBinBytes, so that a bin's samples stay in the core's cache while it is drawn.
-  BinGrid(const PixelRect& clip_rect, std::size_t threads, int samples = 1);
-  BinGrid(const PixelRect& clip_rect, int width_shift, int height_shift);
-  std::size_t count() const { return static_cast<std::size_t>(columns) * rows; }
-  PixelRect rect(std::size_t bin) const;
-};
-
-// Bin sizes as (log2 width, log2 height), largest first.
-inline constexpr int kBinSizes[][2] = {{8, 7}, {7, 7}, {7, 6}, {6, 6}};
-inline constexpr std::size_t kBinsPerThread = 8;
-// A bin holding over a thread's share of the triangles, and at least kMinSplitTriangles,
-// is crowded: it is cut into sub-bins of about a task's share each (kTasksPerThread tasks to a
-// thread), no smaller than 2^kMinSplitBinShift px a side (kernels/src/binned_draw.cpp,
-// plan_shading()).
-inline constexpr std::size_t kTasksPerThread = 4;
-inline constexpr std::size_t kMinSplitTriangles = 256;
-inline constexpr int kMinSplitBinShift = 4;
-// Half the 1 MiB L2 cache of a Zen 4 or Zen 5 core: 128 x 128 px at 4 samples of 8 bytes.
-inline constexpr std::size_t kMultisampleBinBytes = std::size_t{1} << 19;
 
 // The status the kernels' setup gives a triangle with these (unsnapped) vertices, computed the
 // same way in double (kernels/generic/triangle_setup-inl.hpp, setup_triangles), and for a drawn
@@ -116,6 +85,11 @@ void bin_triangles(const TriangleBatch& batch, std::size_t first, std::size_t la
 // `report` counts all triangles, and those decided here.
 void bin_screen_triangles(const TriangleBatch& batch, std::size_t first, std::size_t last,
                           const BinGrid& grid, CornerList* lists, RasterReport& report);
+// bin_screen_triangles() of triangles whose bins drop_culled_triangles() found (BinOutput, one
+// per triangle of the batch): each one with a bin goes straight to that bin's list.
+void bin_screen_triangles(const TriangleBatch& batch, std::size_t first, std::size_t last,
+                          const BinGrid& grid, const std::uint32_t* bins, CornerList* lists,
+                          RasterReport& report);
 
 // Adds `part`, the report of a later range of triangles, to `total`.
 void add_range_report(RasterReport& total, const RasterReport& part);

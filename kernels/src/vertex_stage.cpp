@@ -169,10 +169,10 @@ void add_triangle(const VertexStageCall& call, const std::uint32_t (&corner)[3],
 
 void drop_culled_triangles(const KernelTable& kernels, const ScreenMesh& positions,
                            ScreenMesh& screen, CullMode cull, const SampleWindow& window,
-                           DrawReport& report) {
-  const DroppedTriangles dropped =
-      kernels.drop_culled_triangles(positions.positions.data(), positions.positions.size(),
-                                    screen.indices.data(), screen.indices.size() / 3, cull, window);
+                           DrawReport& report, const BinOutput& output) {
+  const DroppedTriangles dropped = kernels.drop_culled_triangles(
+      positions.positions.data(), positions.positions.size(), screen.indices.data(),
+      screen.indices.size() / 3, cull, window, output);
   screen.indices.truncate(3 * dropped.kept);
   report.culled += dropped.culled;
   report.rasterized += dropped.unseen;
@@ -183,12 +183,15 @@ SampleWindow sample_window(const PixelRect& clip, int samples) {
 }
 
 ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
-                         const DrawOptions& options) {
+                         const DrawOptions& options, const BinGrid* grid,
+                         GrowableArray<std::uint32_t>* bins) {
   ScreenMesh screen;
   run_vertex_stage(*call.kernels, vertex_stage_call(target, mesh, options, call.report.triangles),
                    screen, call.report);
+  BinOutput output;
+  if (grid != nullptr) output = {grid, bins->extend(screen.indices.size() / 3)};
   drop_culled_triangles(*call.kernels, screen, screen, options.cull,
-                        sample_window(call.clip, call.samples), call.report);
+                        sample_window(call.clip, call.samples), call.report, output);
   return screen;
 }
 

@@ -57,9 +57,11 @@ void run_vertex_stage(const KernelTable& kernels, const VertexStageCall& call, S
 // drop_culled_triangles: primitive assembly's culling, before binning and set-up. The culled
 // are counted into report.culled, the others into report.rasterized (drawn, covering nothing).
 // `positions` are those the indices name (a range's screen mesh may index the whole mesh's).
+// With a grid in `output`, output.bins (room for every triangle of `screen`) receives the kept
+// triangles' bins.
 void drop_culled_triangles(const KernelTable& kernels, const ScreenMesh& positions,
                            ScreenMesh& screen, CullMode cull, const SampleWindow& window,
-                           DrawReport& report);
+                           DrawReport& report, const BinOutput& output = {});
 
 // The samples of a draw on `call`'s clip rectangle: up to half a pixel from the centre when
 // multisampled (a pattern's samples lie inside their pixel).

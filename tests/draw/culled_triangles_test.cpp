@@ -8,7 +8,9 @@
 //   pixel or in any standard multisample pattern (for a window that reaches half a pixel);
 // on random lists that mix snapped and unsnapped vertices, both windings, zero areas (repeated
 // and collinear corners), special and guard-band values, bad indices and triangles smaller than
-// a pixel, of every length around the lane counts, under each cull mode and random windows.
+// a pixel, of every length around the lane counts, under each cull mode and random windows;
+// - for a binned draw, each kept triangle's bin is the reference's, and holds every sample the
+//   triangle covers.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -98,12 +100,19 @@ struct Dropped {
 };
 
 Dropped dropped_by(const detail::KernelTable& kernels, const TriangleList& list, CullMode cull,
-                   const detail::SampleWindow& window) {
+                   const detail::SampleWindow& window, const detail::BinGrid* grid = nullptr,
+                   std::vector<std::uint32_t>* bins = nullptr) {
   Dropped dropped{list.indices, {}};
+  detail::BinOutput output;
+  if (grid != nullptr) {
+    bins->assign(list.indices.size() / 3, 0xdead'beefu);
+    output = {grid, bins->data()};
+  }
   dropped.counts =
       kernels.drop_culled_triangles(list.vertices.data(), list.vertices.size(), dropped.kept.data(),
-                                    list.indices.size() / 3, cull, window);
+                                    list.indices.size() / 3, cull, window, output);
   dropped.kept.resize(3 * dropped.counts.kept);
+  if (bins != nullptr) bins->resize(dropped.counts.kept);
   return dropped;
 }
 
@@ -204,6 +213,50 @@ TEST_P(CulledTriangles, KeepsWhatSetUpKeepsAsTheReferenceDoes) {
   EXPECT_GT(culled, 10'000u);
   EXPECT_GT(unseen, 10'000u);
   EXPECT_GT(kept, 10'000u);
+}
+
+// The bins of the kept triangles (BinOutput, for a binned draw): the reference's, and a
+// triangle given a bin covers no sample outside it (every sample it covers in the window it
+// covers in the bin's rectangle too); grids of 8 to 64 px bins, so that boxes often span several.
+TEST_P(CulledTriangles, KeptTrianglesGetTheReferenceBinsWhichHoldTheirSamples) {
+  const detail::KernelTable& kernels = detail::kernel_table(isa());
+  const detail::KernelTable& reference = detail::kernel_table(Isa::reference);
+  Random random(0xb175'0001);
+  std::size_t single = 0, several = 0;
+  for (int round = 0; round < 2000; ++round) {
+    const TriangleList list =
+        random_list(random, static_cast<std::size_t>(random.integer(0, 120)));
+    const CullMode cull = kCullModes[random.integer(0, 2)];
+    const detail::SampleWindow window = random_window(random);
+    const detail::BinGrid grid(window.clip, static_cast<int>(random.integer(3, 6)),
+                               static_cast<int>(random.integer(3, 6)));
+    const std::string where = "round " + std::to_string(round) + ", bins " +
+                              std::to_string(grid.width_shift) + " " +
+                              std::to_string(grid.height_shift);
+    std::vector<std::uint32_t> ours_bins, theirs_bins;
+    const Dropped ours = dropped_by(kernels, list, cull, window, &grid, &ours_bins);
+    const Dropped theirs = dropped_by(reference, list, cull, window, &grid, &theirs_bins);
+    ASSERT_EQ(ours.kept, theirs.kept) << where;
+    ASSERT_EQ(ours_bins, theirs_bins) << where;
+    // Without a grid, the same triangles are kept.
+    ASSERT_EQ(dropped_by(kernels, list, cull, window).kept, ours.kept) << where;
+    for (std::size_t k = 0; k < ours_bins.size(); ++k) {
+      if (ours_bins[k] == detail::kSeveralBins) {
+        ++several;
+        continue;
+      }
+      ++single;
+      ASSERT_LT(ours_bins[k], grid.count()) << where;
+      const std::vector<std::uint32_t> triangle(ours.kept.begin() + 3 * k,
+                                                ours.kept.begin() + 3 * k + 3);
+      detail::SampleWindow in_bin = window;
+      in_bin.clip = grid.rect(ours_bins[k]);
+      ASSERT_EQ(samples_covered(list, triangle, in_bin), samples_covered(list, triangle, window))
+          << where << ", kept triangle " << k;
+    }
+  }
+  EXPECT_GT(single, 500u);
+  EXPECT_GT(several, 5'000u);
 }
 
 EDGEWISE_INSTANTIATE_PER_ISA(CulledTriangles, every_isa());

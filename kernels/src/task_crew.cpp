@@ -1,0 +1,133 @@
+// A crew of helper threads kept awake between phases (task_crew.hpp).
+//
+// The phase being run is one 64-bit word: its generation, its task count and the next index to
+// take. A thread takes an index by a compare-and-swap of the whole word, so that a helper still
+// holding a word of an earlier phase can never take an index of a later one; and a phase's tasks
+// (the function and the finished count, on the caller's stack) are read only after an index of
+// that phase has been taken, which keeps the caller waiting until the task is done.
+#include "task_crew.hpp"
+
+#include <exception>
+#include <thread>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace edgewise::detail {
+namespace {
+
+constexpr int kIndexBits = 20;
+constexpr std::uint64_t kIndexMask = (std::uint64_t{1} << kIndexBits) - 1;
+
+constexpr std::uint64_t make_word(std::uint64_t generation, std::uint64_t count,
+                                  std::uint64_t next) {
+  return (generation << (2 * kIndexBits)) | (count << kIndexBits) | next;
+}
+constexpr std::size_t count_of(std::uint64_t word) {
+  return static_cast<std::size_t>((word >> kIndexBits) & kIndexMask);
+}
+constexpr std::size_t next_of(std::uint64_t word) {
+  return static_cast<std::size_t>(word & kIndexMask);
+}
+
+// A pause in a spin loop: lets the other hardware thread of the core run.
+inline void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#else
+  std::this_thread::yield();
+#endif
+}
+
+}  // namespace
+
+struct TaskCrew::Shared {
+  struct Phase {
+    const std::function<void(std::size_t)>* task = nullptr;
+    std::atomic<std::size_t> finished{0};
+    std::atomic<bool> failed{false};
+    std::exception_ptr failure;
+  };
+  std::atomic<std::uint64_t> word{0};
+  std::atomic<Phase*> phase{nullptr};
+  std::atomic<std::size_t> helpers{0};  // started and not yet gone
+
+  // Takes the next index of the phase in `word` and runs it; false when none is left.
+  bool take_one(std::uint64_t word_seen) {
+    if (next_of(word_seen) >= count_of(word_seen)) return false;
+    if (!word.compare_exchange_weak(word_seen, word_seen + 1, std::memory_order_acquire,
+                                    std::memory_order_relaxed)) {
+      return true;  // another thread took it: look again
+    }
+    Phase& current = *phase.load(std::memory_order_relaxed);
+    try {
+      (*current.task)(next_of(word_seen));
+    } catch (...) {
+      if (!current.failed.exchange(true)) current.failure = std::current_exception();
+    }
+    current.finished.fetch_add(1, std::memory_order_release);
+    return true;
+  }
+
+  void help() {
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point until = Clock::now() + kLinger;
+    for (unsigned spins = 1;; ++spins) {
+      if (take_one(word.load(std::memory_order_acquire))) {
+        until = Clock::time_point{};
+        continue;
+      }
+      relax();
+      if (spins % 64 != 0) continue;
+      const Clock::time_point now = Clock::now();
+      if (until == Clock::time_point{}) until = now + kLinger;
+      if (now < until) continue;
+      helpers.fetch_sub(1, std::memory_order_acq_rel);
+      // A phase begun just now may have counted on this helper: stay for it.
+      const std::uint64_t last = word.load(std::memory_order_acquire);
+      if (next_of(last) >= count_of(last)) return;
+      helpers.fetch_add(1, std::memory_order_acq_rel);
+      until = Clock::time_point{};
+    }
+  }
+};
+
+TaskCrew::TaskCrew(std::size_t helpers, Launch launch)
+    : shared_(std::make_shared<Shared>()), helpers_(helpers), launch_(std::move(launch)) {}
+
+void TaskCrew::call_up() {
+  std::size_t present = shared_->helpers.load(std::memory_order_acquire);
+  while (present < helpers_) {
+    if (!shared_->helpers.compare_exchange_weak(present, present + 1, std::memory_order_acq_rel)) {
+      continue;
+    }
+    launch_([shared = shared_] { shared->help(); });
+    ++present;
+  }
+}
+
+bool TaskCrew::run(std::size_t count, const std::function<void(std::size_t)>& task) {
+  if (count > kMaxTasks) return false;
+  const std::unique_lock lock(caller_, std::try_to_lock);
+  if (!lock.owns_lock()) return false;
+  call_up();
+  Shared& shared = *shared_;
+  Shared::Phase phase;
+  phase.task = &task;
+  shared.phase.store(&phase, std::memory_order_relaxed);
+  const std::uint64_t generation =
+      (shared.word.load(std::memory_order_relaxed) >> (2 * kIndexBits)) + 1;
+  // The generation keeps the word's top bits: it wraps after 2^24 phases.
+  shared.word.store(make_word(generation, count, 0), std::memory_order_release);
+  while (shared.take_one(shared.word.load(std::memory_order_acquire))) {
+  }
+  while (phase.finished.load(std::memory_order_acquire) != count)
+    relax();
+  if (phase.failed.load(std::memory_order_relaxed)) std::rethrow_exception(phase.failure);
+  return true;
+}
+
+}  // namespace edgewise::detail
