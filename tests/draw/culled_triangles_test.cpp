@@ -224,8 +224,7 @@ TEST_P(CulledTriangles, KeptTrianglesGetTheReferenceBinsWhichHoldTheirSamples) {
   Random random(0xb175'0001);
   std::size_t single = 0, several = 0;
   for (int round = 0; round < 2000; ++round) {
-    const TriangleList list =
-        random_list(random, static_cast<std::size_t>(random.integer(0, 120)));
+    const TriangleList list = random_list(random, static_cast<std::size_t>(random.integer(0, 120)));
     const CullMode cull = kCullModes[random.integer(0, 2)];
     const detail::SampleWindow window = random_window(random);
     const detail::BinGrid grid(window.clip, static_cast<int>(random.integer(3, 6)),
