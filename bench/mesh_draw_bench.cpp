@@ -100,11 +100,12 @@ void mesh_draw(benchmark::State& state, Isa isa, const MeshScene* scene, std::si
       model_total += work;
     state.counters["model_work_ratio"] = model_total / one_thread;
     // Each phase's wall-clock share, and its tasks' time on these threads over their time one
-    // after the other (the model's, made for 16 threads: compare on 16 threads).
+    // after the other (the model's, made for 16 threads: only when the draw ran its phases).
+    const bool same_phases = model_work.size() == shares.phase_walls.size();
     for (std::size_t p = 0; p < shares.phase_walls.size(); ++p) {
       const std::string phase = "phase" + std::to_string(p + 1);
       state.counters[phase] = shares.phase_walls[p];
-      if (p < model_work.size() && model_work[p] > 0.0)
+      if (same_phases && model_work[p] > 0.0)
         state.counters[phase + "_work"] = shares.phase_work[p] / model_work[p];
     }
   }

@@ -693,6 +693,41 @@ def print_meshes(meshes, draw_peers):
           "edgewise 1 thread: CPU time; all cores: wall-clock time; serial share: the calling "
           "thread's time outside the draw's tasks over the one-thread time; model 16, 64: the "
           "speed-up the draw's schedule allows on 16 and 64 threads (bench/README.md)")
+    print_thread_time(meshes, isa, names)
+
+
+def print_thread_time(meshes, isa, names):
+    """Where the threads' time went in the all-core draws of the meshes (the profiled draws'
+    shares of threads x wall-clock time), and their work over the one-thread time."""
+    shares = ["share_busy", "share_waking", "share_between", "share_tail", "share_serial"]
+    rows = []
+    for name in names:
+        counters = meshes.get((name, isa, True)) or {}
+        if "share_busy" not in counters:
+            continue
+        row = [name] + [f"{counters[key] * 100:.1f}%" for key in shares]
+        row += [f"{counters[key]:.2f}" if key in counters else "-"
+                for key in ("work_ratio", "model_work_ratio")]
+        phases = int(counters.get("phases", 0))
+        row.append(" ".join(f"{counters.get(f'phase{p}', 0) * 100:.0f}%"
+                            f"/{counters[f'phase{p}_work']:.2f}"
+                            if f"phase{p}_work" in counters else
+                            f"{counters.get(f'phase{p}', 0) * 100:.0f}%"
+                            for p in range(1, phases + 1)))
+        rows.append(row)
+    if not rows:
+        return
+    print()
+    print(f"where the threads' time went on every core (MeshDraw/{isa}/threads:all, profiled "
+          "draws; shares of threads x wall-clock time)")
+    print_table(["mesh", "busy", "waking", "between", "tail", "serial", "work / 1 thread",
+                 "model work / 1 thread", "phases: wall share / work over model's"], rows)
+    print("busy: in a task; waking: from a phase's start to the thread's first task of it (all "
+          "of it without one); between: from one of its tasks to the next; tail: from its last "
+          "task to the phase's end; serial: outside the phases; work: the tasks' time, all "
+          "threads; model work: the same tasks one after the other (the 16-thread model's); "
+          "per phase, its share of the wall-clock time and its tasks' time over the model's "
+          "(bench/README.md)")
 
 
 def print_resolve(resolves, read_once):

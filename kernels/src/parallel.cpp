@@ -100,13 +100,11 @@ void run_in_arena(tbb::task_arena& arena, std::size_t count,
 void run_builtin(std::size_t threads, std::size_t count,
                  const std::function<void(std::size_t)>& task) {
   Builtin& builtin = builtin_for(threads);
-  static const bool no_crew = std::getenv("EW_NO_CREW") != nullptr;
-  if (no_crew || !builtin.crew.run(count, task)) run_in_arena(builtin.arena, count, task);
+  if (!builtin.crew.run(count, task)) run_in_arena(builtin.arena, count, task);
 }
 
 void call_up_builtin(std::size_t threads) {
-  static const bool no_crew = std::getenv("EW_NO_CREW") != nullptr;
-  if (!no_crew) builtin_for(threads).crew.call_up();
+  builtin_for(threads).crew.call_up();
 }
 #else
 std::size_t builtin_concurrency() {
