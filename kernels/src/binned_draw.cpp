@@ -273,11 +273,24 @@ void plan_shading(ShadePlan& plan, DrawCall& call, const BinGrid& grid, const Bi
                    [](const ShadeTask& a, const ShadeTask& b) { return a.load > b.load; });
 }
 
+// The corner indices of lists refs[first, end), one after the other, in `joined`.
+void join_lists(std::span<const ListRef> refs, std::size_t first, std::size_t end,
+                GrowableArray<std::uint32_t>& joined) {
+  joined.truncate(0);
+  for (std::size_t r = first; r < end; ++r) {
+    const CornerList& list = *refs[r].list;
+    std::copy_n(list.data(), 3 * list.triangles(), joined.extend(3 * list.triangles()));
+  }
+}
+
 // Shades every bin (or its sub-bins, plan_shading()), one task each: its lists in submission
 // order, each through the kernel with the task's rectangle as its clip rectangle and the screen
-// mesh of the list's range (range_batches[r]).
+// mesh of the list's range (range_batches[r]). When every range's triangles index one screen
+// mesh (`one_screen`), a task joins its lists and makes one kernel call: a call per list would
+// set up each list's last few triangles in a group of their own (lanes left empty) and pay the
+// call's own set-up once per range.
 void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
-                std::span<const ShadeBatch> range_batches) {
+                std::span<const ShadeBatch> range_batches, bool one_screen) {
   ShadePlan plan;
   plan_shading(plan, call, grid, lists, range_batches);
   std::vector<BinCounts> task_counts(plan.tasks.size());
@@ -285,6 +298,16 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
     const ShadeTask& task = plan.tasks[index];
     ShadeCounts& counts = task_counts[index].shading;
     RasterReport& triangles = task_counts[index].triangles;
+    if (one_screen && task.end - task.first > 1) {
+      thread_local GrowableArray<std::uint32_t> joined;  // kept: no allocation once warm
+      join_lists(plan.refs, task.first, task.end, joined);
+      ShadeBatch batch = range_batches[0];
+      batch.coverage.clip = task.rect;
+      batch.coverage.indices = joined.data();
+      batch.coverage.triangle_count = joined.size() / 3;
+      call.kernels->shade(batch, triangles, counts);
+      return;
+    }
     for (std::size_t r = task.first; r < task.end; ++r) {
       const CornerList& list = *plan.refs[r].list;
       ShadeBatch batch = range_batches[plan.refs[r].range];
@@ -332,7 +355,7 @@ void shade_in_bins(DrawCall& call, Framebuffer& target, const ScreenMesh& screen
   });
   count_screen_triangles(call.report, range_reports);
   const std::vector<ShadeBatch> range_batches(ranges, whole);
-  shade_bins(call, grid, lists, range_batches);
+  shade_bins(call, grid, lists, range_batches, true);
 }
 
 void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
@@ -371,7 +394,7 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
   range_batches.reserve(ranges);
   for (const ScreenMesh& screen : screens)
     range_batches.push_back(make_shade_batch(target, screen, options, call.clip, texture));
-  shade_bins(call, grid, lists, range_batches);
+  shade_bins(call, grid, lists, range_batches, false);
 }
 
 namespace {
@@ -494,7 +517,7 @@ void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh&
   const ShadeBatch whole =
       make_shade_batch(target, screen, options, call.clip, flat ? &flat->description() : nullptr);
   // Every range's triangles index the one screen mesh.
-  shade_bins(call, grid, lists, std::vector<ShadeBatch>(ranges, whole));
+  shade_bins(call, grid, lists, std::vector<ShadeBatch>(ranges, whole), true);
 }
 
 }  // namespace edgewise::detail

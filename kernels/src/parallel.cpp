@@ -56,8 +56,8 @@ std::size_t builtin_concurrency() {
 }
 
 // One arena and one crew per thread count, made on first use and kept: making them per call
-// costs more than a small draw. Never destroyed: a crew's helpers may still be waiting, inside
-// the arena, when the process exits.
+// costs more than a small draw. Destroyed at exit, the crew first: it waits for its helpers to
+// leave the arena.
 struct Builtin {
   explicit Builtin(std::size_t slots)
       : arena(static_cast<int>(slots)), crew(slots - 1, [this](std::function<void()> helper) {
@@ -71,9 +71,9 @@ struct Builtin {
 
 Builtin& builtin_for(std::size_t threads) {
   static std::mutex mutex;
-  static auto* builtins = new std::map<std::size_t, std::unique_ptr<Builtin>>;
+  static std::map<std::size_t, std::unique_ptr<Builtin>> builtins;
   const std::lock_guard lock(mutex);
-  std::unique_ptr<Builtin>& builtin = (*builtins)[threads];
+  std::unique_ptr<Builtin>& builtin = builtins[threads];
   // More slots than oneTBB has workers would only make it print a warning.
   if (!builtin) builtin = std::make_unique<Builtin>(std::min(threads, builtin_concurrency()));
   return *builtin;
@@ -111,13 +111,13 @@ std::size_t builtin_concurrency() {
   return std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kMaxThreads);
 }
 
-// Without oneTBB: a crew of plain threads per thread count, made on first use and kept (never
-// destroyed: its helpers may still be waiting when the process exits).
+// Without oneTBB: a crew of plain threads per thread count, made on first use and kept until
+// exit, when it waits for its helpers to leave.
 TaskCrew& crew_for(std::size_t threads) {
   static std::mutex mutex;
-  static auto* crews = new std::map<std::size_t, std::unique_ptr<TaskCrew>>;
+  static std::map<std::size_t, std::unique_ptr<TaskCrew>> crews;
   const std::lock_guard lock(mutex);
-  std::unique_ptr<TaskCrew>& crew = (*crews)[threads];
+  std::unique_ptr<TaskCrew>& crew = crews[threads];
   if (!crew) {
     crew = std::make_unique<TaskCrew>(
         threads - 1, [](std::function<void()> helper) { std::thread(std::move(helper)).detach(); });

@@ -54,6 +54,8 @@ struct TaskCrew::Shared {
   std::atomic<std::uint64_t> word{0};
   std::atomic<Phase*> phase{nullptr};
   std::atomic<std::size_t> helpers{0};  // started and not yet gone
+  std::atomic<bool> closing{false};     // the crew is being destroyed: helpers leave
+  std::atomic<std::size_t> handles{0};  // helper functions launched and not yet destroyed
 
   // Takes the next index of the phase in `word` and runs it; false when none is left.
   bool take_one(std::uint64_t word_seen) {
@@ -82,6 +84,10 @@ struct TaskCrew::Shared {
       }
       relax();
       if (spins % 64 != 0) continue;
+      if (closing.load(std::memory_order_acquire)) {
+        helpers.fetch_sub(1, std::memory_order_acq_rel);
+        return;
+      }
       const Clock::time_point now = Clock::now();
       if (until == Clock::time_point{}) until = now + kLinger;
       if (now < until) continue;
@@ -95,8 +101,36 @@ struct TaskCrew::Shared {
   }
 };
 
+namespace {
+
+// A helper's hold on the crew's shared state, counted in Shared::handles for as long as any copy
+// of it lives (a launched function may be copied before it runs), so that the crew's destructor
+// can wait until no helper function is left.
+template <class Shared>
+class HelperHandle {
+ public:
+  explicit HelperHandle(std::shared_ptr<Shared> shared) : shared_(std::move(shared)) {
+    shared_->handles.fetch_add(1, std::memory_order_acq_rel);
+  }
+  HelperHandle(const HelperHandle& other) : HelperHandle(other.shared_) {}
+  HelperHandle& operator=(const HelperHandle&) = delete;
+  ~HelperHandle() { shared_->handles.fetch_sub(1, std::memory_order_acq_rel); }
+  Shared& operator*() const { return *shared_; }
+
+ private:
+  std::shared_ptr<Shared> shared_;
+};
+
+}  // namespace
+
 TaskCrew::TaskCrew(std::size_t helpers, Launch launch)
     : shared_(std::make_shared<Shared>()), helpers_(helpers), launch_(std::move(launch)) {}
+
+TaskCrew::~TaskCrew() {
+  shared_->closing.store(true, std::memory_order_release);
+  while (shared_->handles.load(std::memory_order_acquire) != 0)
+    std::this_thread::yield();
+}
 
 void TaskCrew::call_up() {
   std::size_t present = shared_->helpers.load(std::memory_order_acquire);
@@ -104,7 +138,14 @@ void TaskCrew::call_up() {
     if (!shared_->helpers.compare_exchange_weak(present, present + 1, std::memory_order_acq_rel)) {
       continue;
     }
-    launch_([shared = shared_] { shared->help(); });
+    launch_([handle = HelperHandle<Shared>(shared_)] {
+      Shared& shared = *handle;
+      if (shared.closing.load(std::memory_order_acquire)) {
+        shared.helpers.fetch_sub(1, std::memory_order_acq_rel);
+        return;
+      }
+      shared.help();
+    });
     ++present;
   }
 }

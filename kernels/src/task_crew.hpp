@@ -29,6 +29,11 @@ class TaskCrew {
 
   // A crew of `helpers` helpers besides the caller, started by `launch` when needed.
   TaskCrew(std::size_t helpers, Launch launch);
+  // Sends the helpers away and waits until every function `launch` was given has been
+  // destroyed (a helper that has not started yet starts, sees the crew closing and returns).
+  ~TaskCrew();
+  TaskCrew(const TaskCrew&) = delete;
+  TaskCrew& operator=(const TaskCrew&) = delete;
 
   // Starts the helpers that have left (none when all wait), and returns at once.
   void call_up();

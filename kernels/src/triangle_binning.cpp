@@ -255,7 +255,9 @@ void add_range_report(RasterReport& total, const RasterReport& part) {
 
 std::size_t binning_ranges(std::size_t triangles, std::size_t threads) {
   const std::size_t by_size = (triangles + kMinTrianglesPerRange - 1) / kMinTrianglesPerRange;
-  return std::max<std::size_t>(1, std::min(threads, by_size));
+  const std::size_t most =
+      std::max(threads, std::min(kRangesPerThread * threads, triangles / kTrianglesPerExtraRange));
+  return std::max<std::size_t>(1, std::min(most, by_size));
 }
 
 }  // namespace edgewise::detail

@@ -94,10 +94,14 @@ void bin_screen_triangles(const TriangleBatch& batch, std::size_t first, std::si
 // Adds `part`, the report of a later range of triangles, to `total`.
 void add_range_report(RasterReport& total, const RasterReport& part);
 
-// How many ranges to bin `triangles` in with `threads` threads: enough for every thread, but
-// no range shorter than kMinTrianglesPerRange (below it, a range costs more to manage than to
-// bin).
+// How many ranges to bin `triangles` in with `threads` threads: one per thread, but no range
+// shorter than kMinTrianglesPerRange (below it, a range costs more to manage than to bin); and
+// up to kRangesPerThread per thread while ranges keep kTrianglesPerExtraRange triangles, so that
+// on a mesh of millions of triangles a thread that starts late or runs slow leaves its share to
+// the others rather than hold the phase open (docs/design/threads.md says what was measured).
 inline constexpr std::size_t kMinTrianglesPerRange = 2048;
+inline constexpr std::size_t kRangesPerThread = 4;
+inline constexpr std::size_t kTrianglesPerExtraRange = 32768;
 std::size_t binning_ranges(std::size_t triangles, std::size_t threads);
 
 }  // namespace edgewise::detail

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -48,18 +49,36 @@ TEST(TaskCrewThreads, PhasesAfterTheHelpersLeftStillRunEveryTask) {
 }
 
 TEST(TaskCrewThreads, TheCallerRunsEverythingWhenNoHelperStarts) {
+  // The crew outlives the helper functions it launched (its destructor waits for them to go).
+  std::optional<TaskCrew> crew;
   std::vector<std::function<void()>> never_started;
-  TaskCrew crew(5, [&](std::function<void()> helper) { never_started.push_back(helper); });
+  crew.emplace(5, [&](std::function<void()> helper) { never_started.push_back(helper); });
   std::vector<std::thread::id> ran_on(100);
   ASSERT_TRUE(
-      crew.run(ran_on.size(), [&](std::size_t i) { ran_on[i] = std::this_thread::get_id(); }));
+      crew->run(ran_on.size(), [&](std::size_t i) { ran_on[i] = std::this_thread::get_id(); }));
   for (const std::thread::id id : ran_on)
     EXPECT_EQ(id, std::this_thread::get_id());
   // The helpers started once, not once per phase.
   EXPECT_EQ(never_started.size(), 5u);
-  crew.call_up();
-  expect_each_task_once(crew, 10);
+  crew->call_up();
+  expect_each_task_once(*crew, 10);
   EXPECT_EQ(never_started.size(), 5u);
+}
+
+TEST(TaskCrewThreads, DestroyingTheCrewWaitsForItsHelpersToLeave) {
+  std::atomic<int> inside{0}, left{0};
+  {
+    TaskCrew crew(3, [&](std::function<void()> helper) {
+      std::thread([&, helper] {
+        inside.fetch_add(1);
+        helper();
+        left.fetch_add(1);
+      }).detach();
+    });
+    expect_each_task_once(crew, 50);
+  }
+  // Every helper function has returned (and been destroyed) by the time the destructor returns.
+  EXPECT_EQ(left.load(), inside.load());
 }
 
 TEST(TaskCrewThreads, TheFirstExceptionComesBackAfterEveryTaskFinished) {
