@@ -31,8 +31,15 @@ constexpr std::size_t next_of(std::uint64_t word) {
   return static_cast<std::size_t>(word & kIndexMask);
 }
 
-// A pause in a spin loop: lets the other hardware thread of the core run.
-inline void relax() {
+// The `waits`-th wait in a row of a spin loop: a pause, which lets the other hardware thread of
+// the core run, for the first kSpinsBeforeYield; then the processor itself, so that on a
+// machine with more threads than cores (or a busy one) the thread that holds a task can run.
+constexpr unsigned kSpinsBeforeYield = 64;
+inline void wait_a_little(unsigned waits) {
+  if (waits > kSpinsBeforeYield) {
+    std::this_thread::yield();
+    return;
+  }
 #if defined(__x86_64__) || defined(__i386__)
   _mm_pause();
 #elif defined(__aarch64__)
@@ -77,13 +84,14 @@ struct TaskCrew::Shared {
   void help() {
     using Clock = std::chrono::steady_clock;
     Clock::time_point until = Clock::now() + kLinger;
-    for (unsigned spins = 1;; ++spins) {
+    for (unsigned waits = 0;;) {
       if (take_one(word.load(std::memory_order_acquire))) {
         until = Clock::time_point{};
+        waits = 0;
         continue;
       }
-      relax();
-      if (spins % 64 != 0) continue;
+      wait_a_little(++waits);
+      if (waits % 64 != 0) continue;
       if (closing.load(std::memory_order_acquire)) {
         helpers.fetch_sub(1, std::memory_order_acq_rel);
         return;
@@ -165,8 +173,8 @@ bool TaskCrew::run(std::size_t count, const std::function<void(std::size_t)>& ta
   shared.word.store(make_word(generation, count, 0), std::memory_order_release);
   while (shared.take_one(shared.word.load(std::memory_order_acquire))) {
   }
-  while (phase.finished.load(std::memory_order_acquire) != count)
-    relax();
+  for (unsigned waits = 0; phase.finished.load(std::memory_order_acquire) != count;)
+    wait_a_little(++waits);
   if (phase.failed.load(std::memory_order_relaxed)) std::rethrow_exception(phase.failure);
   return true;
 }
