@@ -286,11 +286,15 @@ void join_lists(std::span<const ListRef> refs, std::size_t first, std::size_t en
 // Shades every bin (or its sub-bins, plan_shading()), one task each: its lists in submission
 // order, each through the kernel with the task's rectangle as its clip rectangle and the screen
 // mesh of the list's range (range_batches[r]). When every range's triangles index one screen
-// mesh (`one_screen`), a task joins its lists and makes one kernel call: a call per list would
-// set up each list's last few triangles in a group of their own (lanes left empty) and pay the
-// call's own set-up once per range.
+// mesh, a task joins its lists and makes one kernel call: a call per list would set up each
+// list's last few triangles in a group of their own (lanes left empty) and pay the call's own
+// set-up once per range.
 void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
-                std::span<const ShadeBatch> range_batches, bool one_screen) {
+                std::span<const ShadeBatch> range_batches) {
+  const bool one_screen =
+      std::all_of(range_batches.begin(), range_batches.end(), [&](const ShadeBatch& batch) {
+        return batch.coverage.vertices == range_batches[0].coverage.vertices;
+      });
   ShadePlan plan;
   plan_shading(plan, call, grid, lists, range_batches);
   std::vector<BinCounts> task_counts(plan.tasks.size());
@@ -355,7 +359,7 @@ void shade_in_bins(DrawCall& call, Framebuffer& target, const ScreenMesh& screen
   });
   count_screen_triangles(call.report, range_reports);
   const std::vector<ShadeBatch> range_batches(ranges, whole);
-  shade_bins(call, grid, lists, range_batches, true);
+  shade_bins(call, grid, lists, range_batches);
 }
 
 void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
@@ -394,7 +398,7 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
   range_batches.reserve(ranges);
   for (const ScreenMesh& screen : screens)
     range_batches.push_back(make_shade_batch(target, screen, options, call.clip, texture));
-  shade_bins(call, grid, lists, range_batches, false);
+  shade_bins(call, grid, lists, range_batches);
 }
 
 namespace {
@@ -517,7 +521,7 @@ void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh&
   const ShadeBatch whole =
       make_shade_batch(target, screen, options, call.clip, flat ? &flat->description() : nullptr);
   // Every range's triangles index the one screen mesh.
-  shade_bins(call, grid, lists, std::vector<ShadeBatch>(ranges, whole), true);
+  shade_bins(call, grid, lists, std::vector<ShadeBatch>(ranges, whole));
 }
 
 }  // namespace edgewise::detail
