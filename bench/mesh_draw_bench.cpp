@@ -10,7 +10,7 @@
 // (amdahl16, amdahl64), so that a machine of few cores shows what would stop many from scaling;
 // and model16, model64: the speed-up on 16 and 64 threads of the draw's own schedule (its serial
 // part, its phases' task counts and their balance), from its tasks timed one by one
-// (schedule_model.hpp).
+// (schedule_model.hpp), and model_serial16, the calling thread's share in that 16-thread draw.
 #include <benchmark/benchmark.h>
 
 #include <cstddef>
@@ -92,8 +92,10 @@ void mesh_draw(benchmark::State& state, Isa isa, const MeshScene* scene, std::si
     state.counters["phases"] = shares.phases;
     state.counters["tasks"] = shares.tasks;
     std::vector<double> model_work;
+    double model_serial = 0.0;
     state.counters["model16"] =
-        one_thread / modelled_seconds(options, 16, prepare, draw_with, &model_work);
+        one_thread / modelled_seconds(options, 16, prepare, draw_with, &model_work, &model_serial);
+    state.counters["model_serial16"] = model_serial / one_thread;
     state.counters["model64"] = one_thread / modelled_seconds(options, 64, prepare, draw_with);
     double model_total = 0.0;
     for (double work : model_work)

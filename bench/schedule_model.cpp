@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <queue>
+#include <span>
 
 namespace edgewise::bench {
 namespace {
@@ -49,35 +50,49 @@ double median_seconds(const std::function<void()>& prepare, const std::function<
 double modelled_seconds(DrawOptions options, std::size_t threads,
                         const std::function<void()>& prepare,
                         const std::function<void(const DrawOptions&)>& draw,
-                        std::vector<double>* phase_work) {
-  std::vector<std::vector<double>> phases;
+                        std::vector<double>* phase_work, double* serial) {
+  // Each phase's task times; the storage is kept from run to run, so that the calling thread's
+  // time outside the tasks has no allocation of the model's in it once warm.
+  // The calling thread's time outside them is the draw's time less its executor calls' (the
+  // timing's own cost between tasks belongs to no schedule: neither serial nor a task).
+  std::vector<std::vector<double>> storage;
+  std::size_t phase_count = 0;
+  double in_phases = 0.0;
   options.threads = threads;
-  options.executor = [&phases](std::size_t count, const std::function<void(std::size_t)>& task) {
-    std::vector<double>& times = phases.emplace_back(count);
+  options.executor = [&](std::size_t count, const std::function<void(std::size_t)>& task) {
+    const Clock::time_point phase_start = Clock::now();
+    if (phase_count == storage.size()) storage.emplace_back();
+    std::vector<double>& times = storage[phase_count++];
+    times.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
       const Clock::time_point start = Clock::now();
       task(i);
       times[i] = seconds_since(start);
     }
+    in_phases += seconds_since(phase_start);
   };
-  std::vector<double> seconds, works;
-  for (int i = 0; i < 5; ++i) {
+  std::vector<double> seconds, serials, works;
+  for (int i = 0; i < 6; ++i) {  // the first run warms the storage and is not counted
     prepare();
-    phases.clear();
+    phase_count = 0;
+    in_phases = 0.0;
     const Clock::time_point start = Clock::now();
     draw(options);
-    double modelled = seconds_since(start);
+    double modelled = seconds_since(start) - in_phases;
+    if (i == 0) continue;
+    const std::span<const std::vector<double>> phases(storage.data(), phase_count);
     if (works.size() < phases.size()) works.resize(phases.size(), 0.0);
     for (std::size_t p = 0; p < phases.size(); ++p) {
-      for (double task : phases[p]) {
-        modelled -= task;
+      for (double task : phases[p])
         works[p] += task / 5.0;
-      }
-      modelled += makespan(phases[p], threads);
     }
+    serials.push_back(modelled);
+    for (const std::vector<double>& phase : phases)
+      modelled += makespan(phase, threads);
     seconds.push_back(modelled);
   }
   if (phase_work != nullptr) *phase_work = works;
+  if (serial != nullptr) *serial = median_of_five(serials);
   return median_of_five(seconds);
 }
 

@@ -23,10 +23,11 @@ double median_seconds(const std::function<void()>& prepare, const std::function<
 
 // The modelled time of `draw` with `options` made for `threads` threads: the median of five.
 // `phase_work`, when given, receives each phase's tasks' time added up, in seconds (the mean
-// over the five runs), phases in the order the draw runs them.
+// over the five runs), phases in the order the draw runs them; `serial`, when given, the calling
+// thread's time outside the tasks (the median of the five).
 double modelled_seconds(DrawOptions options, std::size_t threads,
                         const std::function<void()>& prepare,
                         const std::function<void(const DrawOptions&)>& draw,
-                        std::vector<double>* phase_work = nullptr);
+                        std::vector<double>* phase_work = nullptr, double* serial = nullptr);
 
 }  // namespace edgewise::bench

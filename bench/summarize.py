@@ -628,7 +628,7 @@ def print_meshes(meshes, draw_peers):
           "1920x1080): ms per draw() call, and llvmpipe's time / edgewise's (> 1: edgewise faster)")
     header = ["mesh", "triangles", "fragments", f"{isa} 1 thread", "llvmpipe 1 thread",
               "ratio 1", f"{isa} all cores", "llvmpipe default", "ratio all", "edgewise all / 1",
-              "serial share", "model 16", "model 64"]
+              "serial share", "serial 16 (model)", "model 16", "model 64"]
     rows, ratios_one, ratios_all, scaling = [], [], [], []
     models = {"model16": [], "model64": []}
     grids = {"all cores / 1 thread": [], "modelled 16 threads / 1 thread": [],
@@ -650,7 +650,8 @@ def print_meshes(meshes, draw_peers):
         row.append(ratio(p_all, t_all) if p_all and t_all else "-")
         row.append(ratio(t_one, t_all) if t_one and t_all else "-")
         counters = every or {}
-        row.append(f"{counters['serial_share'] * 100:.2f}%" if "serial_share" in counters else "-")
+        for key in ("serial_share", "model_serial16"):
+            row.append(f"{counters[key] * 100:.2f}%" if key in counters else "-")
         grid = GRID_SCENE.match(name) is not None
         for key, values in models.items():
             row.append(f"{counters[key]:.3g}x" if key in counters else "-")
@@ -691,7 +692,8 @@ def print_meshes(meshes, draw_peers):
             print(f"grids of copies of a mesh, {label}: {cells}")
     print("llvmpipe times are its DrawPeer/ medians (1 thread: CPU time; default: wall-clock); "
           "edgewise 1 thread: CPU time; all cores: wall-clock time; serial share: the calling "
-          "thread's time outside the draw's tasks over the one-thread time; model 16, 64: the "
+          "thread's time outside the draw's tasks over the one-thread time; serial 16 (model): the "
+          "same for the draw made for 16 threads, its tasks run one after the other; model 16, 64: the "
           "speed-up the draw's schedule allows on 16 and 64 threads (bench/README.md)")
     print_thread_time(meshes, isa, names)
 
