@@ -115,35 +115,41 @@ struct Chunk {
   std::size_t split, range, first, last;
 };
 
-// How the shading phase's tasks are laid out.
+// How the shading phase's tasks are laid out: tasks[order[i] & kTaskIndexMask] is the i-th dealt.
 struct ShadePlan {
   std::vector<ListRef> refs;
   std::vector<ShadeTask> tasks;
+  std::vector<std::uint64_t> order;
   std::optional<BinLists> sub_lists;  // the chunks' lists, when some bin is crowded
 };
 
-// The triangles in each bin's lists, over all ranges.
+// The dealing order's keys: a task's load above its index, so that sorting 64-bit integers puts
+// the costliest first and, among equal loads, the earlier bin first (a stable sort of the tasks
+// themselves, without its buffer). Tasks number at most 2^22: each is a cell of an aligned grid
+// of at least 16x16 px over a target of at most kMaxTargetSize (2^15) px a side.
+constexpr int kTaskIndexBits = 24;
+constexpr std::uint64_t kTaskIndexMask = (std::uint64_t{1} << kTaskIndexBits) - 1;
+constexpr std::uint64_t kLargestKeyLoad = (std::uint64_t{1} << (64 - kTaskIndexBits)) - 1;
+
+// The triangles in each bin's lists, over all ranges (the ranges' recorded counts).
 std::vector<std::size_t> bin_loads(const BinGrid& grid, const BinLists& lists, std::size_t ranges) {
   std::vector<std::size_t> loads(grid.count(), 0);
   for (std::size_t range = 0; range < ranges; ++range) {
     for (std::size_t bin = 0; bin < loads.size(); ++bin)
-      loads[bin] += lists.list(range, bin).triangles();
+      loads[bin] += lists.triangles(range, bin);
   }
   return loads;
 }
 
-// A task's estimated cost in triangles: its triangles, and a triangle for every kPixelsPerTriangle
-// px of its rectangle when it has any (the one-thread rates of 8-px and 200000-px triangles of
-// the Shading/ benchmark, docs/design/threads.md, put a small triangle at about 500 to 700 px
-// of a large one's pixels).
+// A task's estimated cost in triangles: its `triangles`, and a triangle for every
+// kPixelsPerTriangle px of its rectangle when it has any (the one-thread rates of 8-px and
+// 200000-px triangles of the Shading/ benchmark, docs/design/threads.md, put a small triangle at
+// about 500 to 700 px of a large one's pixels).
 constexpr std::size_t kPixelsPerTriangle = 512;
-std::size_t task_load(const ShadeTask& task, std::span<const ListRef> refs) {
-  std::size_t triangles = 0;
-  for (std::size_t r = task.first; r < task.end; ++r)
-    triangles += refs[r].list->triangles();
+std::size_t task_load(const PixelRect& rect, std::size_t triangles) {
   if (triangles == 0) return 0;
-  const auto pixels = static_cast<std::size_t>(task.rect.x1 - task.rect.x0) *
-                      static_cast<std::size_t>(task.rect.y1 - task.rect.y0);
+  const auto pixels =
+      static_cast<std::size_t>(rect.x1 - rect.x0) * static_cast<std::size_t>(rect.y1 - rect.y0);
   return triangles + pixels / kPixelsPerTriangle;
 }
 
@@ -168,11 +174,10 @@ BinGrid split_grid(const BinGrid& grid, std::size_t bin, std::size_t load, std::
 // them, and at least kMinSplitTriangles), each with its sub-bins, and their chunks: both of
 // about a task's share (kTasksPerThread to a thread).
 std::vector<SplitBin> find_crowded_bins(const BinGrid& grid, const BinLists& lists,
-                                        std::size_t ranges, std::size_t threads,
-                                        std::vector<Chunk>& chunks) {
+                                        std::span<const std::size_t> loads, std::size_t ranges,
+                                        std::size_t threads, std::vector<Chunk>& chunks) {
   std::vector<SplitBin> splits;
   if (threads < 2) return splits;  // one thread (a multisampled call) has nothing to balance
-  const std::vector<std::size_t> loads = bin_loads(grid, lists, ranges);
   std::size_t total = 0;
   for (std::size_t load : loads)
     total += load;
@@ -185,7 +190,7 @@ std::vector<SplitBin> find_crowded_bins(const BinGrid& grid, const BinLists& lis
     if (split.grid.count() < 2) continue;
     split.first_chunk = chunks.size();
     for (std::size_t range = 0; range < ranges; ++range) {
-      const std::size_t triangles = lists.list(range, bin).triangles();
+      const std::size_t triangles = lists.triangles(range, bin);
       for (std::size_t first = 0; first < triangles; first += chunk)
         chunks.push_back({splits.size(), range, first, std::min(triangles, first + chunk)});
     }
@@ -214,7 +219,9 @@ void split_crowded_bins(DrawCall& call, const BinLists& lists,
     batch.clip = split.grid.clip;
     batch.statuses = nullptr;
     CornerList* out =
-        sub_lists.range_lists(0) + split.first_list + (c - split.first_chunk) * split.grid.count();
+        sub_lists.lists_from(split.first_list + (c - split.first_chunk) * split.grid.count());
+    for (std::size_t s = 0; s < split.grid.count(); ++s)
+      out[s].clear();
     bin_screen_triangles(batch, chunk.first, chunk.last, split.grid, out, reports[c]);
   });
   // Only triangles the first binning left undecided can be decided as culled or errors here,
@@ -235,42 +242,57 @@ void split_crowded_bins(DrawCall& call, const BinLists& lists,
 void plan_shading(ShadePlan& plan, DrawCall& call, const BinGrid& grid, const BinLists& lists,
                   std::span<const ShadeBatch> range_batches) {
   const std::size_t ranges = range_batches.size();
+  const std::vector<std::size_t> loads = bin_loads(grid, lists, ranges);
   std::vector<Chunk> chunks;
   const std::vector<SplitBin> splits =
-      find_crowded_bins(grid, lists, ranges, call.workers.threads, chunks);
+      find_crowded_bins(grid, lists, loads, ranges, call.workers.threads, chunks);
   if (!splits.empty()) {
     const SplitBin& last = splits.back();
     plan.sub_lists.emplace(1, last.first_list + last.chunks * last.grid.count());
     split_crowded_bins(call, lists, range_batches, splits, chunks, *plan.sub_lists);
   }
-  const auto add_ref = [&](std::size_t range, const CornerList& list) {
-    if (!list.empty()) plan.refs.push_back({range, &list});
-  };
+  std::size_t refs = 0;
+  for (std::size_t range = 0; range < ranges; ++range) {
+    for (std::size_t bin = 0; bin < grid.count(); ++bin)
+      refs += lists.triangles(range, bin) != 0 ? 1 : 0;
+  }
+  plan.refs.reserve(refs);
+  plan.tasks.reserve(grid.count());
   std::size_t next_split = 0;
   for (std::size_t bin = 0; bin < grid.count(); ++bin) {
     if (next_split < splits.size() && splits[next_split].bin == bin) {
+      // A chunk's sub-lists were written by its task, on one core: read as they are.
       const SplitBin& split = splits[next_split++];
       const std::size_t count = split.grid.count();
       for (std::size_t s = 0; s < count; ++s) {
         ShadeTask task{split.grid.rect(s), plan.refs.size(), 0};
-        for (std::size_t c = 0; c < split.chunks; ++c)
-          add_ref(chunks[split.first_chunk + c].range,
-                  plan.sub_lists->list(0, split.first_list + c * count + s));
+        std::size_t triangles = 0;
+        for (std::size_t c = 0; c < split.chunks; ++c) {
+          const CornerList& list = plan.sub_lists->list(0, split.first_list + c * count + s);
+          if (list.empty()) continue;
+          plan.refs.push_back({chunks[split.first_chunk + c].range, &list});
+          triangles += list.triangles();
+        }
         task.end = plan.refs.size();
+        task.load = task_load(task.rect, triangles);
         plan.tasks.push_back(task);
       }
       continue;
     }
     ShadeTask task{grid.rect(bin), plan.refs.size(), 0};
-    for (std::size_t range = 0; range < ranges; ++range)
-      add_ref(range, lists.list(range, bin));
+    for (std::size_t range = 0; range < ranges; ++range) {
+      if (lists.triangles(range, bin) != 0) plan.refs.push_back({range, &lists.list(range, bin)});
+    }
     task.end = plan.refs.size();
+    task.load = task_load(task.rect, loads[bin]);
     plan.tasks.push_back(task);
   }
-  for (ShadeTask& task : plan.tasks)
-    task.load = task_load(task, plan.refs);
-  std::stable_sort(plan.tasks.begin(), plan.tasks.end(),
-                   [](const ShadeTask& a, const ShadeTask& b) { return a.load > b.load; });
+  plan.order.resize(plan.tasks.size());
+  for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
+    const std::uint64_t load = std::min<std::uint64_t>(plan.tasks[i].load, kLargestKeyLoad);
+    plan.order[i] = (kLargestKeyLoad - load) << kTaskIndexBits | i;
+  }
+  std::sort(plan.order.begin(), plan.order.end());
 }
 
 // The corner indices of lists refs[first, end), one after the other, in `joined`.
@@ -299,7 +321,7 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
   plan_shading(plan, call, grid, lists, range_batches);
   std::vector<BinCounts> task_counts(plan.tasks.size());
   call.workers.run(plan.tasks.size(), [&](std::size_t index) {
-    const ShadeTask& task = plan.tasks[index];
+    const ShadeTask& task = plan.tasks[plan.order[index] & kTaskIndexMask];
     ShadeCounts& counts = task_counts[index].shading;
     RasterReport& triangles = task_counts[index].triangles;
     if (one_screen && task.end - task.first > 1) {
@@ -354,8 +376,9 @@ void shade_in_bins(DrawCall& call, Framebuffer& target, const ScreenMesh& screen
   std::vector<RasterReport> range_reports(ranges);
   call.workers.run(ranges, [&](std::size_t range) {
     bin_screen_triangles(whole.coverage, range * triangles / ranges,
-                         (range + 1) * triangles / ranges, grid, lists.range_lists(range),
+                         (range + 1) * triangles / ranges, grid, lists.start_range(range),
                          range_reports[range]);
+    lists.count_range(range);
   });
   count_screen_triangles(call.report, range_reports);
   const std::vector<ShadeBatch> range_batches(ranges, whole);
@@ -384,7 +407,8 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
     const TriangleBatch batch = screen_triangles(
         target, screen, screen.indices.data(), screen.indices.size() / 3, call.clip, options.cull);
     bin_screen_triangles(batch, 0, batch.triangle_count, grid, bins.data(),
-                         lists.range_lists(range), range_reports[range]);
+                         lists.start_range(range), range_reports[range]);
+    lists.count_range(range);
   });
   DrawReport& report = call.report;
   add_vertex_counts(report, vertex_reports);
@@ -487,7 +511,8 @@ void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh&
     const TriangleBatch batch = screen_triangles(target, all, part.indices.data(),
                                                  part.indices.size() / 3, call.clip, options.cull);
     bin_screen_triangles(batch, 0, batch.triangle_count, grid, bins.data(),
-                         lists.range_lists(range), range_reports[range]);
+                         lists.start_range(range), range_reports[range]);
+    lists.count_range(range);
   };
   call.workers.run(ranges, [&](std::size_t range) {
     const std::size_t first = range * triangles / ranges, last = (range + 1) * triangles / ranges;

@@ -60,7 +60,7 @@ CoverageCount count_in_bins(const detail::TriangleBatch& batch, const detail::Ke
   workers.run(ranges, [&](std::size_t range) {
     detail::bin_triangles(batch, range * batch.triangle_count / ranges,
                           (range + 1) * batch.triangle_count / ranges, grid,
-                          lists.range_lists(range), range_reports[range]);
+                          lists.start_range(range), range_reports[range]);
   });
   std::vector<std::uint64_t> bin_pixels(grid.count());
   workers.run(grid.count(), [&](std::size_t bin) {

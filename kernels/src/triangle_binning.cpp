@@ -11,7 +11,7 @@ namespace {
 // The pool of lists that calls borrow (BinLists).
 struct ListPool {
   std::mutex mutex;
-  std::vector<std::unique_ptr<BinLists::Lists>> free;
+  std::vector<std::unique_ptr<BinLists::Storage>> free;
 };
 ListPool& list_pool() {
   static ListPool pool;
@@ -86,20 +86,35 @@ BinLists::BinLists(std::size_t ranges, std::size_t bins) : bins_(bins) {
   {
     const std::lock_guard lock(pool.mutex);
     if (!pool.free.empty()) {
-      lists_ = std::move(pool.free.back());
+      storage_ = std::move(pool.free.back());
       pool.free.pop_back();
     }
   }
-  if (!lists_) lists_ = std::make_unique<Lists>();
-  if (lists_->size() < ranges * bins) lists_->resize(ranges * bins);
-  for (std::size_t i = 0; i < ranges * bins; ++i)
-    (*lists_)[i].clear();
+  if (!storage_) storage_ = std::make_unique<Storage>();
+  if (storage_->lists.size() < ranges * bins) {
+    storage_->lists.resize(ranges * bins);
+    storage_->counts.resize(ranges * bins);
+  }
+}
+
+CornerList* BinLists::start_range(std::size_t range) {
+  CornerList* lists = storage_->lists.data() + range * bins_;
+  for (std::size_t bin = 0; bin < bins_; ++bin)
+    lists[bin].clear();
+  return lists;
+}
+
+void BinLists::count_range(std::size_t range) {
+  const CornerList* lists = storage_->lists.data() + range * bins_;
+  std::uint32_t* counts = storage_->counts.data() + range * bins_;
+  for (std::size_t bin = 0; bin < bins_; ++bin)
+    counts[bin] = static_cast<std::uint32_t>(lists[bin].triangles());
 }
 
 BinLists::~BinLists() {
   ListPool& pool = list_pool();
   const std::lock_guard lock(pool.mutex);
-  pool.free.push_back(std::move(lists_));
+  pool.free.push_back(std::move(storage_));
 }
 
 namespace {

@@ -46,26 +46,43 @@ class CornerList {
   std::size_t size_ = 0, capacity_ = 0;
 };
 
-// One CornerList per range and bin.
+// One CornerList per range and bin, and each list's triangle count once its range is binned.
 // The lists' storage is kept from call to call: a call borrows a set from a process-wide pool
-// (a lock taken once per call) and gives it back when done.
+// (a lock taken once per call) and gives it back when done. Each range's task empties its own
+// lists and records their counts, so that the calling thread, which plans the bins' tasks, reads
+// one compact array (four bytes per range and bin) and never the lists that other cores wrote.
 class BinLists {
  public:
-  using Lists = std::vector<CornerList>;
-  // ranges x bins empty lists.
+  // ranges x bins lists, emptied by start_range().
   BinLists(std::size_t ranges, std::size_t bins);
   ~BinLists();
   BinLists(const BinLists&) = delete;
   BinLists& operator=(const BinLists&) = delete;
 
-  // The grid.count() lists of one range, for bin_triangles().
-  CornerList* range_lists(std::size_t range) { return lists_->data() + range * bins_; }
+  // The grid.count() lists of one range, emptied, for its task to bin into.
+  CornerList* start_range(std::size_t range);
+  // Records the triangle count of each of the range's lists, for triangles() (its task calls
+  // it once the range is binned).
+  void count_range(std::size_t range);
+
+  // The lists from `first` on, as they are (a caller with lists laid out its own way).
+  CornerList* lists_from(std::size_t first) { return storage_->lists.data() + first; }
   const CornerList& list(std::size_t range, std::size_t bin) const {
-    return (*lists_)[range * bins_ + bin];
+    return storage_->lists[range * bins_ + bin];
+  }
+  // The triangles of range `range` in bin `bin`, as count_range() recorded them. A list holds
+  // fewer than 2^32 triangles: its corner indices are 32-bit.
+  std::uint32_t triangles(std::size_t range, std::size_t bin) const {
+    return storage_->counts[range * bins_ + bin];
   }
 
+  struct Storage {
+    std::vector<CornerList> lists;
+    std::vector<std::uint32_t> counts;
+  };
+
  private:
-  std::unique_ptr<Lists> lists_;
+  std::unique_ptr<Storage> storage_;
   std::size_t bins_;
 };
 
