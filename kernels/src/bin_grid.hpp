@@ -29,7 +29,7 @@ struct BinGrid {
 };
 
 // Bin sizes as (log2 width, log2 height), largest first.
-inline constexpr int kBinSizes[][2] = {{8, 7}, {7, 7}, {7, 6}, {6, 6}};
+inline constexpr int kBinSizes[][2] = {{9, 8}, {8, 7}, {7, 7}, {7, 6}, {6, 6}};
 inline constexpr std::size_t kBinsPerThread = 8;
 // A bin holding over a thread's share of the triangles, and at least kMinSplitTriangles,
 // is crowded: it is cut into sub-bins of about a task's share each (kTasksPerThread tasks to a
