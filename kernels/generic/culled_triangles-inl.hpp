@@ -27,72 +27,15 @@
 #include "../src/kernel_table.hpp"
 #include "../src/triangle_binning.hpp"
 #include "edgewise/coverage.hpp"
-#include "simd_ops-inl.hpp"
+#include "../simd/interleave-inl.hpp"
+#include "../simd/lane_loads-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 #include "texel_fetch-inl.hpp"
 #include "triangle_setup-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 enum class DropDecision { keep, culled, unseen };
-
-// The corners of lanes triangles from `corners` (three indices each), corner i of every
-// triangle in v[i]: with 8 lanes on AVX2 three loads, deinterleaved in registers (gathers cost
-// several times as much); elsewhere a load per lane.
-template <class Arch>
-[[gnu::always_inline]] inline void load_corners(const std::int32_t* corners,
-                                                xsimd::batch<std::int32_t, Arch> (&v)[3]) {
-  using Ints = xsimd::batch<std::int32_t, Arch>;
-#if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Ints::size == 8) {
-    const __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(corners));
-    const __m256i b = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(corners + 8));
-    const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(corners + 16));
-    // Corner i of triangle t is element 3 t + i: lane (3 t + i) mod 8 of the load
-    // (3 t + i) / 8. A blend per corner takes each lane from its load, a permute puts the
-    // triangles in order.
-    const __m256i c0 = _mm256_blend_epi32(_mm256_blend_epi32(a, b, 0b10010010), c, 0b00100100);
-    const __m256i c1 = _mm256_blend_epi32(_mm256_blend_epi32(a, b, 0b00100100), c, 0b01001001);
-    const __m256i c2 = _mm256_blend_epi32(_mm256_blend_epi32(a, b, 0b01001001), c, 0b10010010);
-    v[0] = _mm256_permutevar8x32_epi32(c0, _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
-    v[1] = _mm256_permutevar8x32_epi32(c1, _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
-    v[2] = _mm256_permutevar8x32_epi32(c2, _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
-    return;
-  }
-#endif
-  static constexpr std::int32_t kLaneIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-  const Ints at = Ints::load_unaligned(kLaneIndex) * Ints(3);
-  for (int i = 0; i < 3; ++i)
-    v[i] = gather_int32<Arch>(corners + i, at);
-}
-
-// The x and y of the vertices `index` (each in range) of `xy` (x, y interleaved): on AVX2 each
-// vertex's pair by one 64-bit element of a gather, half the elements of gathering x and y apart.
-template <class Arch>
-[[gnu::always_inline]] inline void gather_vertices(const float* xy,
-                                                   xsimd::batch<std::int32_t, Arch> index,
-                                                   xsimd::batch<float, Arch>& x,
-                                                   xsimd::batch<float, Arch>& y) {
-  using Ints = xsimd::batch<std::int32_t, Arch>;
-#if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Ints::size == 8) {
-    // Lanes 0, 1, 4, 5 in one gather and 2, 3, 6, 7 in the other: the in-lane shuffles that
-    // split x from y then leave the lanes in order.
-    const __m256i split =
-        _mm256_permutevar8x32_epi32(index, _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7));
-    const auto* pairs = reinterpret_cast<const long long*>(xy);
-    const __m256 low =
-        _mm256_castsi256_ps(_mm256_i32gather_epi64(pairs, _mm256_castsi256_si128(split), 8));
-    const __m256 high =
-        _mm256_castsi256_ps(_mm256_i32gather_epi64(pairs, _mm256_extracti128_si256(split, 1), 8));
-    x = _mm256_shuffle_ps(low, high, _MM_SHUFFLE(2, 0, 2, 0));
-    y = _mm256_shuffle_ps(low, high, _MM_SHUFFLE(3, 1, 3, 1));
-    return;
-  }
-#endif
-  const Ints offset = index * Ints(2);
-  x = gather_float<Arch>(xy, offset);
-  y = gather_float<Arch>(xy + 1, offset);
-}
 
 // What the pass does with the triangle of `corner`: set-up's decisions in its exact arithmetic
 // (classify_triangle(), the binning's), kept when an index is out of range or a vertex is not
@@ -229,7 +172,7 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
     if (lanes_reach && vertex_count != 0) {
       Ints v[3];
       if (count == kLanes) {
-        load_corners<Arch>(corners + 3 * first, v);
+        load_records3_int32<Arch>(corners + 3 * first, v);
       } else {
         // Lanes past the end repeat the last triangle; they are never stored.
         const Ints at = xsimd::min(lane, Ints(static_cast<std::int32_t>(count - 1))) * Ints(3);
@@ -242,7 +185,7 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
         // As int32, an index of 2^31 or more is negative: out of range too.
         const auto valid = v[i] >= Ints(0) && v[i] <= last_vertex;
         in_range = in_range && valid;
-        gather_vertices<Arch>(xy, xsimd::select(valid, v[i], Ints(0)), x[i], y[i]);
+        gather_float_pairs<Arch>(xy, xsimd::select(valid, v[i], Ints(0)), x[i], y[i]);
       }
       auto exact =
           xsimd::batch_cast<float>(xsimd::select(in_range, Ints(1), Ints(0))) == Floats(1.0f);

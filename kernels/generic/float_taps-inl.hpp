@@ -8,9 +8,9 @@
 #include <xsimd/xsimd.hpp>
 
 #include "../src/sample_kernels.hpp"
-#include "simd_ops-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 #include "texel_fetch-inl.hpp"
-#include "texel_pairs-inl.hpp"
+#include "../simd/texel_pairs-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

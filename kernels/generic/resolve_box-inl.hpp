@@ -15,7 +15,7 @@
 #include <xsimd/xsimd.hpp>
 
 #include "../src/resolve_call.hpp"
-#include "lane_arch-inl.hpp"
+#include "../simd/lane_arch-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

@@ -19,8 +19,8 @@
 #include <xsimd/xsimd.hpp>
 
 #include "../src/resolve_call.hpp"
-#include "lane_arch-inl.hpp"
-#include "simd_ops-inl.hpp"
+#include "../simd/lane_arch-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

@@ -10,8 +10,8 @@
 #include "../src/isa_kernels.hpp"
 #include "../src/sample_kernels.hpp"
 #include "fixed_taps-inl.hpp"
-#include "interleave-inl.hpp"
-#include "lane_arch-inl.hpp"
+#include "../simd/interleave-inl.hpp"
+#include "../simd/lane_arch-inl.hpp"
 #include "summed_area-inl.hpp"
 #include "texture_filters-inl.hpp"
 

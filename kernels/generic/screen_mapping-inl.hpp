@@ -12,8 +12,8 @@
 #include "../src/clip.hpp"
 #include "edgewise/camera.hpp"
 #include "edgewise/vector.hpp"
-#include "interleave-inl.hpp"
-#include "simd_ops-inl.hpp"
+#include "../simd/interleave-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

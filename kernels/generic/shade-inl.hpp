@@ -30,7 +30,8 @@
 #include "plane_setup-inl.hpp"
 #include "budget_prefilter-inl.hpp"
 #include "sample_walk-inl.hpp"
-#include "simd_ops-inl.hpp"
+#include "../simd/row_pairs-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 #include "texture_tile-inl.hpp"
 #include "tile_masks-inl.hpp"
 
@@ -756,15 +757,7 @@ class ShadingVisitor {
   // terms, mask handling and loop) for the same lanes of work. Each lane takes the same float
   // operations on the same dx and dy as in the 8-lane loop (row r + 1's centre, r + 1.5, is exact),
   // so the results are identical.
-  using PairFloats = xsimd::batch<float, xsimd::avx512bw>;
-  using PairMask = xsimd::batch_bool<float, xsimd::avx512bw>;
-
-  // An 8-lane row's values in both halves.
-  [[gnu::always_inline]] static PairFloats both_rows(Floats row) {
-    const __m256 half = row;
-    return PairFloats(_mm512_insertf32x8(_mm512_castps256_ps512(half), half, 1));
-  }
-
+  // (PairFloats and the other row-pair operations: simd/row_pairs-inl.hpp.)
   template <DepthTest Test, bool Divide, bool Full, bool Lit, bool Uniform>
   [[gnu::always_inline]] void shade_planar_row_pairs(std::uint64_t mask, std::uint32_t rows,
                                                      float* depth, std::uint32_t* color,
@@ -777,12 +770,12 @@ class ShadingVisitor {
                                                              0.5f, 0.5f, 1.5f, 1.5f, 1.5f, 1.5f,
                                                              1.5f, 1.5f, 1.5f, 1.5f};
     const PairFloats row_centre = PairFloats::load_aligned(kPairRowCentre);
-    const PairFloats depth_column = both_rows(columns.depth[0]);
+    const PairFloats depth_column = both_halves(columns.depth[0]);
     PairFloats colour_column[kPlanes];
     for (int k = Uniform ? kFirstNormalPlane : 0; k < kPlanes; ++k) {
       if (k == 4 && !Divide) continue;
       if (k >= kFirstNormalPlane && !Lit) break;
-      colour_column[k] = both_rows(columns.colour[k][0]);
+      colour_column[k] = both_halves(columns.colour[k][0]);
     }
     std::uint64_t passed = 0;
     PairFloats largest(-std::numeric_limits<float>::infinity());
@@ -796,12 +789,11 @@ class ShadingVisitor {
       float* depth_at = depth + static_cast<std::size_t>(row) * kTileSize;
       const PairFloats stored = PairFloats::load_aligned(depth_at);
       PairMask write = passes<Test>(z, stored);
-      if constexpr (!Full) write = write && PairMask(static_cast<__mmask16>(mask >> (8 * row)));
+      if constexpr (!Full) write = write && pair_mask_of_bits(mask >> (8 * row));
       const PairFloats updated = xsimd::select(write, z, stored);
       updated.store_aligned(depth_at);
       largest = xsimd::max(largest, updated);
-      const __mmask16 written = write;
-      passed += static_cast<std::uint64_t>(std::popcount(static_cast<unsigned>(written)));
+      passed += static_cast<std::uint64_t>(std::popcount(bits_of_pair_mask(write)));
       const auto plane_at = [&](int k) {
         return (PairFloats(plane_[k].at_vertex) + PairFloats(plane_[k].dy) * dy) + colour_column[k];
       };
@@ -820,13 +812,10 @@ class ShadingVisitor {
         apply_light(normal, channel);
       }
       std::uint32_t* color_at = color + static_cast<std::size_t>(row) * kTileSize;
-      const __m512i packed = pack_rgba8_lanes<xsimd::avx512bw>(channel);
-      _mm512_mask_store_epi32(color_at, written, packed);
+      store_masked(color_at, write, pack_rgba8_lanes<xsimd::avx512bw>(channel));
     }
     passed_ += passed;
-    const __m512 wide = largest;
-    stored_max = xsimd::max(stored_max, Floats(_mm256_max_ps(_mm512_castps512_ps256(wide),
-                                                             _mm512_extractf32x8_ps(wide, 1))));
+    stored_max = xsimd::max(stored_max, Floats(max_of_halves(largest)));
   }
 #endif
 

@@ -33,7 +33,7 @@
 
 #include <xsimd/xsimd.hpp>
 
-#include "simd_ops-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 #include "tile_masks-inl.hpp"
 #include "tile_walk-inl.hpp"
 #include "triangle_setup-inl.hpp"

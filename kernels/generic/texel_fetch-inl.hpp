@@ -12,11 +12,9 @@
 #include <xsimd/xsimd.hpp>
 
 #include "../src/sample_kernels.hpp"
-#include "simd_ops-inl.hpp"
-
-#if defined(__SSSE3__)
-#include <immintrin.h>
-#endif
+#include "../simd/byte_lanes-inl.hpp"
+#include "../simd/lane_loads-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
@@ -32,85 +30,14 @@ struct LevelLanes {
   xsimd::batch<float, Arch> widthf, heightf;
 };
 
-// base[index] per lane by one load per lane, for texels: the gather instruction is slower than
-// separate loads over a texture's scattered texels, and faster only on small, hot tables (the
-// EWA weights), which keep gather_*() (docs/design/textures.md has the figures). The lanes are
-// built from their values at once (vmovd and vpinsrd on x86), not inserted one by one into the
-// whole register as xsimd's gather does.
-template <class Arch, class T, std::size_t... Lane>
-EDGEWISE_INLINE xsimd::batch<T, Arch> load_lanes(const T* base, const std::int32_t* at,
-                                                 std::index_sequence<Lane...>) {
-  return xsimd::batch<T, Arch>{base[at[Lane]]...};
-}
-
-template <class Arch, class T>
-EDGEWISE_INLINE xsimd::batch<T, Arch> load_lanes(const T* base,
-                                                 xsimd::batch<std::int32_t, Arch> index) {
-  constexpr std::size_t kLanes = xsimd::batch<std::int32_t, Arch>::size;
-  alignas(64) std::int32_t at[kLanes];
-  index.store_aligned(at);
-  return load_lanes<Arch>(base, at, std::make_index_sequence<kLanes>{});
-}
-
-template <class Arch>
-EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> load_lanes_int32(
-    const std::int32_t* base, xsimd::batch<std::int32_t, Arch> index) {
-  return load_lanes<Arch>(base, index);
-}
-
-template <class Arch>
-EDGEWISE_INLINE xsimd::batch<float, Arch> load_lanes_float(const float* base,
-                                                           xsimd::batch<std::int32_t, Arch> index) {
-  return load_lanes<Arch>(base, index);
-}
-
-// base[index] per lane with the AVX2 gather instruction (xsimd 8.1 never emits it); a load
-// per lane elsewhere.
-template <class Arch>
-EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> gather_int32(
-    const std::int32_t* base, xsimd::batch<std::int32_t, Arch> index) {
-#if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    return _mm256_i32gather_epi32(reinterpret_cast<const int*>(base), index, 4);
-  } else
-#endif
-  {
-    return load_lanes<Arch>(base, index);
-  }
-}
-
-template <class Arch>
-EDGEWISE_INLINE xsimd::batch<float, Arch> gather_float(const float* base,
-                                                       xsimd::batch<std::int32_t, Arch> index) {
-#if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    return _mm256_i32gather_ps(base, index, 4);
-  } else
-#endif
-  {
-    return load_lanes<Arch>(base, index);
-  }
-}
-
 // table[index] per lane for an index below kLevelTableReadable: on AVX2 the table's 16 entries
-// are permuted in registers, two permutes and a blend, which is faster than a gather per table
-// and level (docs/design/textures.md).
+// are permuted in registers, which is faster than a gather per table and level
+// (docs/design/textures.md).
 template <class Arch>
 EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> lookup_small_table(
     const std::int32_t* table, xsimd::batch<std::int32_t, Arch> index) {
-#if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
-    static_assert(detail::kLevelTableReadable == 16);
-    const __m256i low = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(table));
-    const __m256i high = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + 8));
-    const __m256i in_high = _mm256_cmpgt_epi32(index, _mm256_set1_epi32(7));
-    return _mm256_blendv_epi8(_mm256_permutevar8x32_epi32(low, index),
-                              _mm256_permutevar8x32_epi32(high, index), in_high);
-  } else
-#endif
-  {
-    return load_lanes_int32<Arch>(table, index);
-  }
+  static_assert(detail::kLevelTableReadable == kLookup16Entries);
+  return lookup16_int32<Arch>(table, index);
 }
 
 template <class Arch>
@@ -239,46 +166,12 @@ EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> wrap_any_index(xsimd::batch<std
   return xsimd::select(r >= n, period - Ints(1) - r, r);
 }
 
-// Lane j of the byte shuffle (pshufb) that moves byte k of each 32-bit lane of a 128-bit block to
-// the lane's lowest byte and zeroes the others (index bit 7 set).
-constexpr std::int32_t byte_k_selector(int k, int j) {
-  return static_cast<std::int32_t>(0x80808000u + 4 * j + k);
-}
-
-#if defined(__SSSE3__)
-EDGEWISE_INLINE __m128i byte_k_of_lanes(int k) {
-  return _mm_setr_epi32(byte_k_selector(k, 0), byte_k_selector(k, 1), byte_k_selector(k, 2),
-                        byte_k_selector(k, 3));
-}
-#endif
-
 // Channel k of 8-bit RGBA texels (one per lane), in the texture's stored units.
 template <class Arch>
 EDGEWISE_INLINE xsimd::batch<float, Arch> decode_channel(const detail::TextureDescription& texture,
                                                          xsimd::batch<std::int32_t, Arch> packed,
                                                          int k) {
-  using Ints = xsimd::batch<std::int32_t, Arch>;
-  Ints code;
-#if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Ints::size == 8) {
-    // A 256-bit constant, not a broadcast 128-bit one: the compiler then reads it as the
-    // shuffle's memory operand instead of building it in a register (and spilling it).
-    const auto lane = [k](int j) { return byte_k_selector(k, j); };
-    code = _mm256_shuffle_epi8(packed, _mm256_setr_epi32(lane(0), lane(1), lane(2), lane(3),
-                                                         lane(0), lane(1), lane(2), lane(3)));
-  } else
-#endif
-#if defined(__SSSE3__)
-      if constexpr (std::is_base_of_v<xsimd::ssse3, Arch> && Ints::size == 4) {
-    code = _mm_shuffle_epi8(packed, byte_k_of_lanes(k));
-  } else
-#endif
-  {
-    // Logical shift (as unsigned), masked below the top byte.
-    using Uints = xsimd::batch<std::uint32_t, Arch>;
-    const Uints bits = xsimd::bitwise_cast<Uints>(packed);
-    code = xsimd::bitwise_cast<Ints>(k == 3 ? bits >> 24 : (bits >> (8 * k)) & Uints(0xFF));
-  }
+  const xsimd::batch<std::int32_t, Arch> code = byte_of_lanes<Arch>(packed, k);
   if (k < 3 && texture.srgb_table != nullptr) return gather_float<Arch>(texture.srgb_table, code);
   return xsimd::to_float(code);
 }

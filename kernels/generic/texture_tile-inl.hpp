@@ -20,7 +20,7 @@
 #include "../src/shade_batch.hpp"
 #include "../src/texture_planes.hpp"
 #include "interpolation-inl.hpp"
-#include "simd_ops-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

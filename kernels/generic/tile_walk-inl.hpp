@@ -11,8 +11,8 @@
 
 #include <xsimd/xsimd.hpp>
 
-#include "lane_arch-inl.hpp"
-#include "simd_ops-inl.hpp"
+#include "../simd/lane_arch-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 #include "tile_masks-inl.hpp"
 #include "triangle_setup-inl.hpp"
 

@@ -8,7 +8,7 @@
 #include <type_traits>
 
 #include "../src/kernel_table.hpp"
-#include "lane_arch-inl.hpp"
+#include "../simd/lane_arch-inl.hpp"
 #include "sample_walk-inl.hpp"
 #include "span_walk-inl.hpp"
 #include "tile_walk-inl.hpp"

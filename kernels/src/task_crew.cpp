@@ -10,9 +10,7 @@
 #include <exception>
 #include <thread>
 
-#if defined(__x86_64__) || defined(__i386__)
-#include <immintrin.h>
-#endif
+#include "../simd/spin_pause.hpp"
 
 namespace edgewise::detail {
 namespace {
@@ -31,8 +29,8 @@ constexpr std::size_t next_of(std::uint64_t word) {
   return static_cast<std::size_t>(word & kIndexMask);
 }
 
-// The `waits`-th wait in a row of a spin loop: a pause, which lets the other hardware thread of
-// the core run, for the first kSpinsBeforeYield; then the processor itself, so that on a
+// The `waits`-th wait in a row of a spin loop: a pause (spin_pause), which lets the other hardware
+// thread of the core run, for the first kSpinsBeforeYield; then the processor itself, so that on a
 // machine with more threads than cores (or a busy one) the thread that holds a task can run.
 constexpr unsigned kSpinsBeforeYield = 64;
 inline void wait_a_little(unsigned waits) {
@@ -40,13 +38,7 @@ inline void wait_a_little(unsigned waits) {
     std::this_thread::yield();
     return;
   }
-#if defined(__x86_64__) || defined(__i386__)
-  _mm_pause();
-#elif defined(__aarch64__)
-  asm volatile("yield");
-#else
-  std::this_thread::yield();
-#endif
+  spin_pause();
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 
 #include "fast_interpolation.hpp"
 #include "generic/interpolation-inl.hpp"
-#include "generic/lane_arch-inl.hpp"
+#include "simd/lane_arch-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 namespace {

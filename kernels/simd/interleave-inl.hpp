@@ -1,13 +1,16 @@
 // Batches to and from interleaved records: four channel batches stored as RGBA records (lane l's
-// four values at out + 4 l), two as (x, y) pairs, and records of three or six floats loaded as one
-// batch per field; register shuffles per group of four lanes instead of a scalar move per lane
-// and value.
+// four values at out + 4 l), two as (x, y) pairs, records of three or six floats (and of three
+// int32) loaded as one batch per field, and 4x4 transposes within 128-bit blocks; register
+// shuffles per group of four lanes instead of a scalar move per lane and value.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 
 #include <xsimd/xsimd.hpp>
+
+#include "lane_loads-inl.hpp"
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -193,6 +196,75 @@ template <class Arch>
   fields[3] = pairs_high(f23_a, f23_b);
   fields[4] = pairs_low(f45_a, f45_b);
   fields[5] = pairs_high(f45_a, f45_b);
+}
+
+// A 4x4 transpose in each 128-bit block: in[j] holds item j's four values in its first block
+// (and item j + 4's in its second, with 8 lanes); out[c] value c of every item, in item order.
+template <class Arch>
+[[gnu::always_inline]] inline void transpose_blocks4(const xsimd::batch<float, Arch> (&in)[4],
+                                                     xsimd::batch<float, Arch> (&out)[4]) {
+  using Floats = xsimd::batch<float, Arch>;
+  constexpr std::size_t kLanes = Floats::size;
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+    const __m256 t0 = _mm256_unpacklo_ps(in[0], in[1]), t1 = _mm256_unpackhi_ps(in[0], in[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(in[2], in[3]), t3 = _mm256_unpackhi_ps(in[2], in[3]);
+    out[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+    out[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+    out[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+    out[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+  } else
+#endif
+#if defined(__SSE2__)
+      if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) {
+    const __m128 t0 = _mm_unpacklo_ps(in[0], in[1]), t1 = _mm_unpackhi_ps(in[0], in[1]);
+    const __m128 t2 = _mm_unpacklo_ps(in[2], in[3]), t3 = _mm_unpackhi_ps(in[2], in[3]);
+    out[0] = _mm_movelh_ps(t0, t2);
+    out[1] = _mm_movehl_ps(t2, t0);
+    out[2] = _mm_movelh_ps(t1, t3);
+    out[3] = _mm_movehl_ps(t3, t1);
+  } else
+#endif
+  {
+    alignas(64) float lanes[4][kLanes], channels[4][kLanes];
+    for (int j = 0; j < 4; ++j)
+      in[j].store_aligned(lanes[j]);
+    for (std::size_t item = 0; item < kLanes; ++item) {
+      for (int c = 0; c < 4; ++c)
+        channels[c][item] = lanes[item % 4][4 * (item / 4) + c];
+    }
+    for (int c = 0; c < 4; ++c)
+      out[c] = Floats::load_aligned(channels[c]);
+  }
+}
+
+// Records of three int32 (a triangle's corner indices), one per lane, from `records`: field i
+// of every record in v[i]. With 8 lanes on AVX2 three loads, deinterleaved in registers (gathers
+// cost several times as much); elsewhere a load per lane.
+template <class Arch>
+[[gnu::always_inline]] inline void load_records3_int32(const std::int32_t* records,
+                                                       xsimd::batch<std::int32_t, Arch> (&v)[3]) {
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+#if defined(__AVX2__)
+  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Ints::size == 8) {
+    const __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(records));
+    const __m256i b = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(records + 8));
+    const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(records + 16));
+    // Field i of record t is element 3 t + i: lane (3 t + i) mod 8 of the load (3 t + i) / 8.
+    // A blend per field takes each lane from its load, a permute puts the records in order.
+    const __m256i c0 = _mm256_blend_epi32(_mm256_blend_epi32(a, b, 0b10010010), c, 0b00100100);
+    const __m256i c1 = _mm256_blend_epi32(_mm256_blend_epi32(a, b, 0b00100100), c, 0b01001001);
+    const __m256i c2 = _mm256_blend_epi32(_mm256_blend_epi32(a, b, 0b01001001), c, 0b10010010);
+    v[0] = _mm256_permutevar8x32_epi32(c0, _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+    v[1] = _mm256_permutevar8x32_epi32(c1, _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
+    v[2] = _mm256_permutevar8x32_epi32(c2, _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+    return;
+  }
+#endif
+  static constexpr std::int32_t kLaneIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  const Ints at = Ints::load_unaligned(kLaneIndex) * Ints(3);
+  for (int i = 0; i < 3; ++i)
+    v[i] = gather_int32<Arch>(records + i, at);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE
