@@ -9,6 +9,7 @@
 
 #include "../src/isa_kernels.hpp"
 #include "../src/sample_kernels.hpp"
+#include "ewa_filter-inl.hpp"
 #include "fixed_taps-inl.hpp"
 #include "../simd/interleave-inl.hpp"
 #include "../simd/lane_arch-inl.hpp"
@@ -243,9 +244,11 @@ void sample_with(const detail::TextureDescription& texture, const SamplerOptions
       return sample_all<false>(texture, queries, count, out,
                                [&](const Q& q)
                                    EDGEWISE_INLINE_LAMBDA { return f.bicubic(q.s, q.t, false); });
-    case TextureFilter::ewa:
+    case TextureFilter::ewa: {
+      const EwaFilter<Arch> ewa(f, texture, options);
       return sample_all<true>(texture, queries, count, out,
-                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return f.ewa(q); });
+                              [&](const Q& q) EDGEWISE_INLINE_LAMBDA { return ewa.filter(q); });
+    }
     case TextureFilter::summed_area: {
       const SummedAreaBox<Arch> box(texture, options);
       return sample_all<true, false>(

@@ -33,7 +33,7 @@ inline constexpr int kBinSizes[][2] = {{9, 8}, {8, 7}, {7, 7}, {7, 6}, {6, 6}};
 inline constexpr std::size_t kBinsPerThread = 8;
 // A bin holding over a thread's share of the triangles, and at least kMinSplitTriangles,
 // is crowded: it is cut into sub-bins of about a task's share each (kTasksPerThread tasks to a
-// thread), no smaller than 2^kMinSplitBinShift px a side (kernels/src/binned_draw.cpp,
+// thread), no smaller than 2^kMinSplitBinShift px a side (kernels/src/shading_plan.cpp,
 // plan_shading()).
 inline constexpr std::size_t kTasksPerThread = 4;
 inline constexpr std::size_t kMinSplitTriangles = 256;
