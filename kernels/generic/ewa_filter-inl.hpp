@@ -1,4 +1,4 @@
-// The elliptical weighted average (sample.hpp, ewa; kernels/reference/sample_reference.cpp):
+// The elliptical weighted average (sample.hpp, ewa; kernels/reference/ewa_reference.cpp):
 // the footprint's ellipse per query, its level, and the Gaussian-weighted texels inside it,
 // row by row. Magnified lanes take bilinear from TextureFilters.
 #pragma once
@@ -7,7 +7,6 @@
 
 #include <xsimd/xsimd.hpp>
 
-#include "../src/sample_kernels.hpp"
 #include "fast_log2-inl.hpp"
 #include "texel_fetch-inl.hpp"
 #include "texture_filters-inl.hpp"

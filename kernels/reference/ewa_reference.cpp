@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <stdexcept>
 
 #include "../src/level_of_detail.hpp"
 #include "reference/sample_reference.hpp"
