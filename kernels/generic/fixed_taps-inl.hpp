@@ -57,7 +57,8 @@ class FixedTapSums {
     index_a.store_aligned(at_a);
     // The two texels of lane l as 8 bytes, a's RGBA then b's: one load, or one per texel.
     if (adjacent) {
-      accumulate(
+      madd_byte_pairs<Arch>(
+          sums_,
           [&](std::size_t l) EDGEWISE_INLINE_LAMBDA {
             std::uint64_t bytes;
             std::memcpy(&bytes, texels + 4 * static_cast<std::ptrdiff_t>(at_a[l]), sizeof bytes);
@@ -67,7 +68,8 @@ class FixedTapSums {
       return;
     }
     index_b.store_aligned(at_b);
-    accumulate(
+    madd_byte_pairs<Arch>(
+        sums_,
         [&](std::size_t l) EDGEWISE_INLINE_LAMBDA {
           std::uint32_t first, second;
           std::memcpy(&first, texels + 4 * static_cast<std::ptrdiff_t>(at_a[l]), sizeof first);
@@ -97,12 +99,6 @@ class FixedTapSums {
   [[gnu::always_inline]] static Ints fixed_weight(Floats w) {
     return xsimd::min(xsimd::to_int(w * Floats(kFixedWeightOne) + Floats(0.5f)),
                       Ints(kFixedWeightMost));
-  }
-
-  // sums_[j] += the multiply-add of query j's (and j + 4's) interleaved texels and weights.
-  template <class Pair>
-  [[gnu::always_inline]] void accumulate(const Pair& pair, Ints packed) {
-    madd_byte_pairs<Arch>(sums_, pair, packed);
   }
 
   const std::byte* texels_;

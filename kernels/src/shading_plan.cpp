@@ -6,6 +6,9 @@
 namespace edgewise::detail {
 namespace {
 
+// The largest load a key holds: larger ones deal as if they were this (costliest first anyway).
+constexpr std::uint64_t kLargestKeyLoad = (std::uint64_t{1} << (64 - kTaskIndexBits)) - 1;
+
 // A crowded bin cut into sub-bins (`grid` over the bin's rectangle). Its triangles are binned
 // again in pieces, its chunks [first_chunk, first_chunk + chunks), each into lists of its own:
 // the lists of chunk c start at first_list + (c - first_chunk) * grid.count().
@@ -137,12 +140,6 @@ void plan_shading(ShadePlan& plan, DrawCall& call, const BinGrid& grid, const Bi
     plan.sub_lists.emplace(1, last.first_list + last.chunks * last.grid.count());
     split_crowded_bins(call, lists, range_batches, splits, chunks, *plan.sub_lists);
   }
-  std::size_t refs = 0;
-  for (std::size_t range = 0; range < ranges; ++range) {
-    for (std::size_t bin = 0; bin < grid.count(); ++bin)
-      refs += lists.triangles(range, bin) != 0 ? 1 : 0;
-  }
-  plan.refs.reserve(refs);
   plan.tasks.reserve(grid.count());
   std::size_t next_split = 0;
   for (std::size_t bin = 0; bin < grid.count(); ++bin) {

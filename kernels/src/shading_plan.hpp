@@ -22,7 +22,6 @@ namespace edgewise::detail {
 // of at least 16x16 px over a target of at most kMaxTargetSize (2^15) px a side.
 constexpr int kTaskIndexBits = 24;
 constexpr std::uint64_t kTaskIndexMask = (std::uint64_t{1} << kTaskIndexBits) - 1;
-constexpr std::uint64_t kLargestKeyLoad = (std::uint64_t{1} << (64 - kTaskIndexBits)) - 1;
 
 // One list of triangles a shading task walks, and the range whose screen mesh they index.
 struct ListRef {

@@ -106,9 +106,9 @@ CornerList* BinLists::start_range(std::size_t range) {
 
 void BinLists::count_range(std::size_t range) {
   const CornerList* lists = storage_->lists.data() + range * bins_;
-  std::uint32_t* counts = storage_->counts.data() + range * bins_;
+  std::size_t* counts = storage_->counts.data() + range * bins_;
   for (std::size_t bin = 0; bin < bins_; ++bin)
-    counts[bin] = static_cast<std::uint32_t>(lists[bin].triangles());
+    counts[bin] = lists[bin].triangles();
 }
 
 BinLists::~BinLists() {

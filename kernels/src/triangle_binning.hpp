@@ -50,7 +50,7 @@ class CornerList {
 // The lists' storage is kept from call to call: a call borrows a set from a process-wide pool
 // (a lock taken once per call) and gives it back when done. Each range's task empties its own
 // lists and records their counts, so that the calling thread, which plans the bins' tasks, reads
-// one compact array (four bytes per range and bin) and never the lists that other cores wrote.
+// one compact array (a count per range and bin) and never the lists that other cores wrote.
 class BinLists {
  public:
   // ranges x bins lists, emptied by start_range().
@@ -70,15 +70,14 @@ class BinLists {
   const CornerList& list(std::size_t range, std::size_t bin) const {
     return storage_->lists[range * bins_ + bin];
   }
-  // The triangles of range `range` in bin `bin`, as count_range() recorded them. A list holds
-  // fewer than 2^32 triangles: its corner indices are 32-bit.
-  std::uint32_t triangles(std::size_t range, std::size_t bin) const {
+  // The triangles of range `range` in bin `bin`, as count_range() recorded them.
+  std::size_t triangles(std::size_t range, std::size_t bin) const {
     return storage_->counts[range * bins_ + bin];
   }
 
   struct Storage {
     std::vector<CornerList> lists;
-    std::vector<std::uint32_t> counts;
+    std::vector<std::size_t> counts;
   };
 
  private:
