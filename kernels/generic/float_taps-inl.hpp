@@ -39,8 +39,10 @@ class FloatTapSums {
     const Pairs<float, Arch> w = make_pairs<float, Arch>(weight_a, weight_b);
     for (int k = 0; k < 4; ++k) {
       Pairs<float, Arch>& sum = sums_[k];
-      sum.low = xsimd::fma(decode_channel<Arch>(texture_, texel.low, k), w.low, sum.low);
-      sum.high = xsimd::fma(decode_channel<Arch>(texture_, texel.high, k), w.high, sum.high);
+      sum.low =
+          fused_multiply_add<Arch>(decode_channel<Arch>(texture_, texel.low, k), w.low, sum.low);
+      sum.high =
+          fused_multiply_add<Arch>(decode_channel<Arch>(texture_, texel.high, k), w.high, sum.high);
     }
   }
 

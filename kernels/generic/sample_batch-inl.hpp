@@ -20,15 +20,19 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 namespace sample_detail {
 
+// The filters made of bilinear taps in float run on the ISA's full width (16 lanes on AVX-512:
+// half the instructions per query of 8 lanes, docs/design/textures.md); the others, and the
+// fixed-point taps, on 8 lanes at most.
 using Arch = RowArch<EDGEWISE_ARCH>;
-using Floats = xsimd::batch<float, Arch>;
-using Ints = xsimd::batch<std::int32_t, Arch>;
-constexpr std::size_t kLanes = Floats::size;
+using TapArch = WideArch<Arch>;
 
 // Where queries come from and results go: records (TextureQuery, Vec4) or one array per field
 // (QueryFields, ResultChannels). load(first, n) returns queries [first, first + n) as batches,
 // lanes past n repeating the last query; store(rgba, first, n) writes n results.
+template <class Arch>
 struct RecordQueries {
+  using Floats = xsimd::batch<float, Arch>;
+  static constexpr std::size_t kLanes = Floats::size;
   const TextureQuery* queries;
 
   [[gnu::always_inline]] QueryLanes<Arch> load(std::size_t first, std::size_t count) const {
@@ -52,7 +56,9 @@ struct RecordQueries {
   }
 };
 
+template <class Arch>
 struct RecordResults {
+  static constexpr std::size_t kLanes = xsimd::batch<float, Arch>::size;
   Vec4* out;
 
   [[gnu::always_inline]] void store(const Rgba<Arch>& rgba, std::size_t first,
@@ -71,8 +77,12 @@ struct RecordResults {
 };
 
 // Lanes [0, count) of `field + first`, the rest repeating the last.
-[[gnu::always_inline]] inline Floats load_field(const float* field, std::size_t first,
-                                                std::size_t count) {
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<float, Arch> load_field(const float* field,
+                                                                   std::size_t first,
+                                                                   std::size_t count) {
+  using Floats = xsimd::batch<float, Arch>;
+  constexpr std::size_t kLanes = Floats::size;
   if (count == kLanes) return Floats::load_unaligned(field + first);
   alignas(64) float lanes[kLanes];
   for (std::size_t l = 0; l < kLanes; ++l)
@@ -80,17 +90,21 @@ struct RecordResults {
   return Floats::load_aligned(lanes);
 }
 
+template <class Arch>
 struct FieldQueries {
   detail::QueryFields fields;
 
   [[gnu::always_inline]] QueryLanes<Arch> load(std::size_t first, std::size_t count) const {
-    return {load_field(fields.s, first, count),    load_field(fields.t, first, count),
-            load_field(fields.dsdx, first, count), load_field(fields.dtdx, first, count),
-            load_field(fields.dsdy, first, count), load_field(fields.dtdy, first, count)};
+    return {
+        load_field<Arch>(fields.s, first, count),    load_field<Arch>(fields.t, first, count),
+        load_field<Arch>(fields.dsdx, first, count), load_field<Arch>(fields.dtdx, first, count),
+        load_field<Arch>(fields.dsdy, first, count), load_field<Arch>(fields.dtdy, first, count)};
   }
 };
 
+template <class Arch>
 struct ChannelResults {
+  static constexpr std::size_t kLanes = xsimd::batch<float, Arch>::size;
   detail::ResultChannels channels;
 
   [[gnu::always_inline]] void store(const Rgba<Arch>& rgba, std::size_t first,
@@ -115,11 +129,14 @@ struct ChannelResults {
 // then replaced by (0, 0, 0, 0) or the coarsest texel.
 // kStoredUnits: the filter returns the texture's stored units (texel_fetch-inl.hpp), scaled to
 // linear here; otherwise it returns linear values.
-template <bool kReadsDerivatives, bool kStoredUnits = true, class Queries, class Results,
-          class Filter>
+template <bool kReadsDerivatives, bool kStoredUnits = true, class Arch,
+          template <class> class Queries, template <class> class Results, class Filter>
 [[gnu::always_inline]] inline void sample_all(const detail::TextureDescription& texture,
-                                              const Queries& queries, std::size_t count,
-                                              const Results& out, Filter filter) {
+                                              const Queries<Arch>& queries, std::size_t count,
+                                              const Results<Arch>& out, Filter filter) {
+  using Floats = xsimd::batch<float, Arch>;
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  constexpr std::size_t kLanes = Floats::size;
   const detail::LevelTable& mips = texture.mips;
   const Rgba<Arch> coarsest = fetch_texels<Arch>(texture, Ints(mips.start[mips.count - 1]));
   const Floats largest(std::numeric_limits<float>::max());
@@ -168,6 +185,8 @@ template <bool kReadsDerivatives, bool kStoredUnits = true, class Queries, class
 // The summed-area box per lane: its table is double and its terms differ per query, so lanes
 // are taken one at a time, each query's four channels summed together in double batches.
 inline Rgba<Arch> summed_area_lanes(const SummedAreaBox<Arch>& box, const QueryLanes<Arch>& q) {
+  using Floats = xsimd::batch<float, Arch>;
+  constexpr std::size_t kLanes = Floats::size;
   alignas(64) float fields[6][kLanes];
   const Floats* values[6] = {&q.s, &q.t, &q.dsdx, &q.dtdx, &q.dsdy, &q.dtdy};
   for (int f = 0; f < 6; ++f)
@@ -186,11 +205,13 @@ inline Rgba<Arch> summed_area_lanes(const SummedAreaBox<Arch>& box, const QueryL
   return out;
 }
 
-// Every query through `options`' filter, one made of bilinear taps, which `Sums` weighs and sums.
-template <class Sums, class Queries, class Results>
+// Every query through `options`' filter, one made of bilinear taps, which `Sums` weighs and sums,
+// in batches of Sums' lanes.
+template <template <class> class Sums, class Arch, template <class> class Queries,
+          template <class> class Results>
 void sample_taps(const detail::TextureDescription& texture, const SamplerOptions& options,
-                 const Queries& queries, std::size_t count, const Results& out) {
-  const TextureFilters<Arch, Sums> f(texture, options);
+                 const Queries<Arch>& queries, std::size_t count, const Results<Arch>& out) {
+  const TextureFilters<Arch, Sums<Arch>> f(texture, options);
   using Q = QueryLanes<Arch>;
   switch (options.filter) {
     case TextureFilter::bilinear:
@@ -220,14 +241,18 @@ void sample_taps(const detail::TextureDescription& texture, const SamplerOptions
 }
 
 // Every query through the filter `options` names, in the precision they carry.
-template <class Queries, class Results>
+template <template <class> class Queries, template <class> class Results, class Source,
+          class Target>
 void sample_with(const detail::TextureDescription& texture, const SamplerOptions& options,
-                 const Queries& queries, std::size_t count, const Results& out) {
+                 const Source& source, std::size_t count, const Target& target) {
+  const Queries<Arch> queries{source};
+  const Results<Arch> out{target};
   if (reads_bilinear_taps(options.filter)) {
     if (detail::fixed_point_taps(texture, options)) {
-      return sample_taps<FixedTapSums<Arch>>(texture, options, queries, count, out);
+      return sample_taps<FixedTapSums>(texture, options, queries, count, out);
     }
-    return sample_taps<FloatTapSums<Arch>>(texture, options, queries, count, out);
+    return sample_taps<FloatTapSums>(texture, options, Queries<TapArch>{source}, count,
+                                     Results<TapArch>{target});
   }
   const TextureFilters<Arch> f(texture, options);
   using Q = QueryLanes<Arch>;
@@ -265,14 +290,14 @@ void sample_with(const detail::TextureDescription& texture, const SamplerOptions
 void sample(const detail::TextureDescription& texture, const SamplerOptions& options,
             const TextureQuery* queries, std::size_t count, Vec4* out) {
   using namespace sample_detail;
-  sample_with(texture, options, RecordQueries{queries}, count, RecordResults{out});
+  sample_with<RecordQueries, RecordResults>(texture, options, queries, count, out);
 }
 
 void sample_fields(const detail::TextureDescription& texture, const SamplerOptions& options,
                    const detail::QueryFields& queries, std::size_t count,
                    const detail::ResultChannels& out) {
   using namespace sample_detail;
-  sample_with(texture, options, FieldQueries{queries}, count, ChannelResults{out});
+  sample_with<FieldQueries, ChannelResults>(texture, options, queries, count, out);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -19,6 +19,7 @@
 
 #include "../src/level_of_detail.hpp"
 #include "fast_log2-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 #include "float_taps-inl.hpp"
 #include "texel_fetch-inl.hpp"
 
@@ -50,7 +51,7 @@ template <class Arch>
 EDGEWISE_INLINE void accumulate(Rgba<Arch>& sum, const Rgba<Arch>& value,
                                 xsimd::batch<float, Arch> weight) {
   for (int k = 0; k < 4; ++k)
-    sum.c[k] = xsimd::fma(value.c[k], weight, sum.c[k]);
+    sum.c[k] = fused_multiply_add<Arch>(value.c[k], weight, sum.c[k]);
 }
 
 // Sums: how the bilinear taps of 8-bit textures are weighted and summed, FloatTapSums or

@@ -20,6 +20,7 @@
 #include "../src/shade_batch.hpp"
 #include "../src/texture_planes.hpp"
 #include "interpolation-inl.hpp"
+#include "../simd/lane_arch-inl.hpp"
 #include "../simd/simd_ops-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
@@ -31,6 +32,11 @@ class TextureTile {
   static constexpr std::size_t kLanes = Floats::size;
   static constexpr std::size_t kParts = kTileSize / kLanes;
   static constexpr std::size_t kPixels = kTileSize * kTileSize;
+  // Rows per batch of the sampler's widest kernels (sample_batch-inl.hpp): the rows queried and
+  // filtered are whole batches of them, so that no batch is partial. A row sampled but not
+  // written costs its lanes only.
+  static constexpr int kSampledRows =
+      static_cast<int>((xsimd::batch<float, WideArch<Arch>>::size + kTileSize - 1) / kTileSize);
 
   TextureTile() {
     for (float* field : {s_, t_})
@@ -53,6 +59,8 @@ class TextureTile {
 
   // The queries of rows first_row .. last_row, for measure() and filter_rows().
   void query_rows(std::int32_t px, std::int32_t py, int first_row, int last_row) {
+    first_row = sampled_first(first_row);
+    last_row = sampled_last(last_row);
     const bool quad = derivatives_ == TextureDerivatives::quad;
     // Quad differences need the other row of each quad too.
     const int first = quad ? first_row & ~1 : first_row;
@@ -93,6 +101,8 @@ class TextureTile {
 
   // The sampler's texels at the queries of rows first_row .. last_row.
   void filter_rows(const detail::ShadeBatch& batch, int first_row, int last_row) {
+    first_row = sampled_first(first_row);
+    last_row = sampled_last(last_row);
     const std::size_t begin = static_cast<std::size_t>(first_row) * kTileSize;
     const std::size_t count = static_cast<std::size_t>(last_row - first_row + 1) * kTileSize;
     const detail::QueryFields fields{s_ + kPad + begin, t_ + kPad + begin, dsdx_ + begin,
@@ -156,6 +166,9 @@ class TextureTile {
 
  private:
   static constexpr std::size_t kPad = 16;  // a whole cache line, so rows stay aligned
+
+  static int sampled_first(int row) { return row - row % kSampledRows; }
+  static int sampled_last(int row) { return row - row % kSampledRows + kSampledRows - 1; }
 
   void derivatives_at(int row, std::size_t h) {
     const std::size_t at = static_cast<std::size_t>(row) * kTileSize + h * kLanes;

@@ -28,8 +28,17 @@ template <class Arch>
 EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> byte_of_lanes(
     xsimd::batch<std::int32_t, Arch> packed, int k) {
   using Ints = xsimd::batch<std::int32_t, Arch>;
+#if defined(__AVX512BW__)
+  if constexpr (std::is_base_of_v<xsimd::avx512bw, Arch>) {
+    const auto lane = [k](int j) { return byte_k_selector(k, j); };
+    return _mm512_shuffle_epi8(
+        packed,
+        _mm512_setr_epi32(lane(0), lane(1), lane(2), lane(3), lane(0), lane(1), lane(2), lane(3),
+                          lane(0), lane(1), lane(2), lane(3), lane(0), lane(1), lane(2), lane(3)));
+  } else
+#endif
 #if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Ints::size == 8) {
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Ints::size == 8) {
     // A 256-bit constant, not a broadcast 128-bit one: the compiler then reads it as the
     // shuffle's memory operand instead of building it in a register (and spilling it).
     const auto lane = [k](int j) { return byte_k_selector(k, j); };

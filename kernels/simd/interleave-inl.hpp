@@ -36,8 +36,21 @@ inline void store_interleaved4(__m128 r, __m128 g, __m128 b, __m128 a, float* ou
 // Stores all lanes: out must hold 4 * lanes floats.
 template <class Arch>
 inline void store_interleaved(const xsimd::batch<float, Arch> (&channels)[4], float* out) {
+#if defined(__AVX512F__)
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    const auto block = [&]<int kBlock>(std::integral_constant<int, kBlock>) {
+      const auto lanes = [&](int k) { return _mm512_extractf32x4_ps(channels[k], kBlock); };
+      store_interleaved4(lanes(0), lanes(1), lanes(2), lanes(3), out + 16 * kBlock);
+    };
+    block(std::integral_constant<int, 0>{});
+    block(std::integral_constant<int, 1>{});
+    block(std::integral_constant<int, 2>{});
+    block(std::integral_constant<int, 3>{});
+    return;
+  } else
+#endif
 #if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
     for (int half = 0; half < 2; ++half) {
       const auto lanes = [&](int k) {
         return half == 0 ? _mm256_castps256_ps128(channels[k])
@@ -151,14 +164,22 @@ template <class Arch>
                                                                    int offset) {
   using Floats = xsimd::batch<float, Arch>;
   const float* first = in + 6 * record + offset;
+#if defined(__AVX512F__)
+  if constexpr (Floats::size == 16) {
+    const __m512 blocks = _mm512_castps128_ps512(_mm_loadu_ps(first));
+    const __m512 two = _mm512_insertf32x4(blocks, _mm_loadu_ps(first + 6 * 4), 1);
+    const __m512 three = _mm512_insertf32x4(two, _mm_loadu_ps(first + 6 * 8), 2);
+    return _mm512_insertf32x4(three, _mm_loadu_ps(first + 6 * 12), 3);
+  } else
+#endif
 #if defined(__AVX2__)
-  if constexpr (Floats::size == 8) {
+      if constexpr (Floats::size == 8) {
     return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(first)),
                                 _mm_loadu_ps(first + 6 * 4), 1);
   } else
 #endif
   {
-    static_assert(Floats::size == 4, "record_row: 4 or 8 lanes");
+    static_assert(Floats::size == 4, "record_row: 4, 8 or 16 lanes");
     return Floats::load_unaligned(first);
   }
 }

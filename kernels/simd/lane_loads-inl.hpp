@@ -64,8 +64,13 @@ EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> gather_int32(
 template <class Arch>
 EDGEWISE_INLINE xsimd::batch<float, Arch> gather_float(const float* base,
                                                        xsimd::batch<std::int32_t, Arch> index) {
+#if defined(__AVX512F__)
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    return _mm512_i32gather_ps(index, base, 4);
+  } else
+#endif
 #if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
     return _mm256_i32gather_ps(base, index, 4);
   } else
 #endif
@@ -74,14 +79,19 @@ EDGEWISE_INLINE xsimd::batch<float, Arch> gather_float(const float* base,
   }
 }
 
-// table[index] per lane for an index below kLookup16Entries: on AVX2 the table's 16 entries are
-// permuted in registers (two permutes and a blend); a load per lane elsewhere.
+// table[index] per lane for an index below kLookup16Entries: on AVX-512 the table's 16 entries
+// are one register permuted, on AVX2 two (two permutes and a blend); a load per lane elsewhere.
 inline constexpr int kLookup16Entries = 16;
 template <class Arch>
 EDGEWISE_INLINE xsimd::batch<std::int32_t, Arch> lookup16_int32(
     const std::int32_t* table, xsimd::batch<std::int32_t, Arch> index) {
+#if defined(__AVX512F__)
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    return _mm512_permutexvar_epi32(index, _mm512_loadu_si512(table));
+  } else
+#endif
 #if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) {
     const __m256i low = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(table));
     const __m256i high = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + 8));
     const __m256i in_high = _mm256_cmpgt_epi32(index, _mm256_set1_epi32(7));

@@ -71,8 +71,17 @@ template <class T, class Arch>
 [[gnu::always_inline]] inline Pairs<T, Arch> make_pairs(xsimd::batch<T, Arch> a,
                                                         xsimd::batch<T, Arch> b) {
   static_assert(sizeof(T) == 4 && xsimd::batch<T, Arch>::size % 4 == 0);
+#if defined(__AVX512F__)
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    if constexpr (std::is_same_v<T, float>) {
+      return {_mm512_unpacklo_ps(a, b), _mm512_unpackhi_ps(a, b)};
+    } else {
+      return {_mm512_unpacklo_epi32(a, b), _mm512_unpackhi_epi32(a, b)};
+    }
+  } else
+#endif
 #if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && xsimd::batch<T, Arch>::size == 8) {
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && xsimd::batch<T, Arch>::size == 8) {
     if constexpr (std::is_same_v<T, float>) {
       return {_mm256_unpacklo_ps(a, b), _mm256_unpackhi_ps(a, b)};
     } else {
@@ -108,8 +117,16 @@ template <class T, class Arch>
 template <class Arch>
 [[gnu::always_inline]] inline xsimd::batch<float, Arch> sum_pairs(const Pairs<float, Arch>& pairs) {
   using Floats = xsimd::batch<float, Arch>;
+#if defined(__AVX512F__)
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    // No horizontal add of 512 bits: the a and b of each 128-bit block apart, then added.
+    const __m512 a = _mm512_shuffle_ps(pairs.low, pairs.high, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m512 b = _mm512_shuffle_ps(pairs.low, pairs.high, _MM_SHUFFLE(3, 1, 3, 1));
+    return _mm512_add_ps(a, b);
+  } else
+#endif
 #if defined(__AVX2__)
-  if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Floats::size == 8) {
+      if constexpr (std::is_base_of_v<xsimd::avx2, Arch> && Floats::size == 8) {
     return _mm256_hadd_ps(pairs.low, pairs.high);
   } else
 #endif
