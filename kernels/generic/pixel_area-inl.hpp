@@ -74,6 +74,129 @@
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
+namespace area_walk_detail {
+
+// Tiles not yet touched in the current tile row.
+inline constexpr std::uint16_t kUntouched = 0xFFFF;
+
+// Between the row's first candidate and its last, pixels no piece touches are whole: the row r
+// of each tile that [span_first, span_end) reaches starts as 1 there and 0 elsewhere (a tile is
+// cleared when first reached), and the candidates' areas replace it.
+template <class Arch>
+[[gnu::always_inline]] inline void fill_whole_span(AreaTile* tiles, std::int32_t span_first,
+                                                   std::int32_t span_end, int r,
+                                                   std::uint32_t triangle,
+                                                   std::int32_t first_tile_x, std::int32_t ty) {
+  using Floats = xsimd::batch<float, Arch>;
+  constexpr int kFloatLanes = static_cast<int>(Floats::size);
+  for (std::int32_t c = span_first / kTileSize; c <= (span_end - 1) / kTileSize; ++c) {
+    AreaTile& tile = tiles[c];
+    if (tile.tile_y == kUntouched) {
+      tile.triangle = triangle;
+      tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
+      tile.tile_y = static_cast<std::uint16_t>(ty);
+      tile.mask = 0;
+      for (int k = 0; k < kTileSize * kTileSize; k += kFloatLanes)
+        Floats(0.0f).store_unaligned(tile.area + k);
+    }
+    const std::int32_t from = span_first - c * kTileSize, to = span_end - c * kTileSize;
+    float* row = tile.area + r * kTileSize;
+    if (from <= 0 && to >= kTileSize) {
+      for (int k = 0; k < kTileSize; k += kFloatLanes)
+        Floats(1.0f).store_unaligned(row + k);
+      tile.mask |= std::uint64_t{0xFF} << (r * kTileSize);
+      continue;
+    }
+    const std::uint32_t whole =
+        (0xFFu >> (to < kTileSize ? kTileSize - to : 0)) & (0xFFu << (from > 0 ? from : 0));
+    for (int k = 0; k < kTileSize; k += kFloatLanes) {
+      xsimd::select(lanes_of_bits<Arch>(whole >> k), Floats(1.0f), Floats(0.0f))
+          .store_unaligned(row + k);
+    }
+    tile.mask |= std::uint64_t{whole} << (r * kTileSize);
+  }
+}
+
+// The candidates of each edge in row r, [first[e], end[e]), clipped to [x_begin, x_end); returns
+// the span from the first candidate to the end of the last.
+inline std::pair<std::int32_t, std::int32_t> row_candidates(const TileRowBands& bands, int r,
+                                                            std::int32_t x_begin,
+                                                            std::int32_t x_end,
+                                                            std::int32_t (&first)[3],
+                                                            std::int32_t (&end)[3]) {
+  for (int e = 0; e < 3; ++e) {
+    const std::int32_t f = static_cast<std::int32_t>(bands.first[e][r]);
+    const std::int32_t l = static_cast<std::int32_t>(bands.last[e][r]) + 1;
+    first[e] = f > x_begin ? f : x_begin;
+    end[e] = l < x_end ? l : x_end;
+  }
+  std::int32_t span_first = first[0] < first[1] ? first[0] : first[1];
+  span_first = first[2] < span_first ? first[2] : span_first;
+  std::int32_t span_end = end[0] > end[1] ? end[0] : end[1];
+  span_end = end[2] > span_end ? end[2] : span_end;
+  return {span_first, span_end};
+}
+
+// Row r's edges into `row_edges`, those with a ramp first; returns their counts.
+struct RowEdgeCounts {
+  int ramps = 0, wholes = 0;
+};
+template <class Arch>
+[[gnu::always_inline]] inline RowEdgeCounts load_row_edges(const TileRowBands& bands,
+                                                           const AreaEdge (&edges)[3], int r,
+                                                           RowEdges<Arch>& row_edges) {
+  using Doubles = xsimd::batch<double, Arch>;
+  RowEdgeCounts counts;
+  for (int e = 0; e < 3; ++e) {
+    if (bands.ramp[e][r] != 0.0) {
+      const AreaEdge& edge = edges[e];
+      const int i = counts.ramps++;
+      row_edges.extent[i] = Doubles(edge.rising ? edge.right : edge.left);
+      row_edges.start[i] = Doubles(bands.start[e][r]);
+      row_edges.end[i] = Doubles(bands.end[e][r]);
+      row_edges.twice_start[i] = Doubles(bands.twice_start[e][r]);
+      row_edges.upper[i] = Doubles(edge.upper_weight);
+      row_edges.ramp[i] = Doubles(edge.ramp_weight);
+    } else if (bands.whole[e][r] != 0.0) {
+      const int i = counts.wholes++;
+      row_edges.left[i] = Doubles(edges[e].left);
+      row_edges.right[i] = Doubles(edges[e].right);
+      row_edges.whole[i] = Doubles(bands.whole[e][r]);
+    }
+  }
+  return counts;
+}
+
+// f.template operator()<ramps, wholes>() for the row's edge counts: the one place they become
+// template arguments.
+template <class F>
+[[gnu::always_inline]] inline void with_edge_counts(RowEdgeCounts counts, F&& f) {
+  switch (counts.ramps * 4 + counts.wholes) {
+    case 0 * 4 + 1:
+      return f.template operator()<0, 1>();
+    case 0 * 4 + 2:
+      return f.template operator()<0, 2>();
+    case 0 * 4 + 3:
+      return f.template operator()<0, 3>();
+    case 1 * 4 + 0:
+      return f.template operator()<1, 0>();
+    case 1 * 4 + 1:
+      return f.template operator()<1, 1>();
+    case 1 * 4 + 2:
+      return f.template operator()<1, 2>();
+    case 2 * 4 + 0:
+      return f.template operator()<2, 0>();
+    case 2 * 4 + 1:
+      return f.template operator()<2, 1>();
+    case 3 * 4 + 0:
+      return f.template operator()<3, 0>();
+    default:
+      return f.template operator()<0, 0>();
+  }
+}
+
+}  // namespace area_walk_detail
+
 // Walks a triangle's box a tile row at a time and hands its tiles to `emit` (AreaTile&) in row
 // order. The tiles of a row are made in the caller's storage: storage.row(columns) gives room
 // for `columns` tiles, which stays valid until the row's tiles have been emitted (so a caller
@@ -89,13 +212,10 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
   }
   using Wide = WideArch<Arch>;
   using Doubles = xsimd::batch<double, Wide>;
-  using Floats = xsimd::batch<float, Arch>;
   constexpr std::int32_t kLanes = static_cast<std::int32_t>(Doubles::size);
-  constexpr int kFloatLanes = static_cast<int>(Floats::size);
   static_assert(kTileSize % kLanes == 0, "a group of lanes never straddles a tile");
   constexpr std::uint64_t kGroupBits = (std::uint64_t{1} << kLanes) - 1;
-  // Tiles not yet touched in the current tile row.
-  constexpr std::uint16_t kUntouched = 0xFFFF;
+  using area_walk_detail::kUntouched;
   const std::int32_t first_tile_x = box.x0 / kTileSize;
   const std::int32_t origin = first_tile_x * kTileSize;
   const std::int32_t x_begin = box.x0 - origin, x_end = box.x1 - origin;
@@ -117,67 +237,14 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
     for (std::int32_t c = 0; c < columns; ++c)
       tiles[c].tile_y = kUntouched;
     for (int r = r_begin; r < r_end; ++r) {
-      // The candidates of each edge, clipped to the box.
       std::int32_t first[3], end[3];
-      for (int e = 0; e < 3; ++e) {
-        const std::int32_t f = static_cast<std::int32_t>(bands.first[e][r]);
-        const std::int32_t l = static_cast<std::int32_t>(bands.last[e][r]) + 1;
-        first[e] = f > x_begin ? f : x_begin;
-        end[e] = l < x_end ? l : x_end;
-      }
-      std::int32_t span_first = first[0] < first[1] ? first[0] : first[1];
-      span_first = first[2] < span_first ? first[2] : span_first;
-      std::int32_t span_end = end[0] > end[1] ? end[0] : end[1];
-      span_end = end[2] > span_end ? end[2] : span_end;
+      const auto [span_first, span_end] =
+          area_walk_detail::row_candidates(bands, r, x_begin, x_end, first, end);
       if (span_first >= span_end) continue;
-      // Between the first candidate and the last, pixels no piece touches are whole: the row
-      // of each tile the span reaches starts as 1 there and 0 elsewhere (a tile is cleared
-      // when first reached), and the candidates' areas replace it.
-      for (std::int32_t c = span_first / kTileSize; c <= (span_end - 1) / kTileSize; ++c) {
-        AreaTile& tile = tiles[c];
-        if (tile.tile_y == kUntouched) {
-          tile.triangle = triangle;
-          tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
-          tile.tile_y = static_cast<std::uint16_t>(ty);
-          tile.mask = 0;
-          for (int k = 0; k < kTileSize * kTileSize; k += kFloatLanes)
-            Floats(0.0f).store_unaligned(tile.area + k);
-        }
-        const std::int32_t from = span_first - c * kTileSize, to = span_end - c * kTileSize;
-        float* row = tile.area + r * kTileSize;
-        if (from <= 0 && to >= kTileSize) {
-          for (int k = 0; k < kTileSize; k += kFloatLanes)
-            Floats(1.0f).store_unaligned(row + k);
-          tile.mask |= std::uint64_t{0xFF} << (r * kTileSize);
-          continue;
-        }
-        const std::uint32_t whole =
-            (0xFFu >> (to < kTileSize ? kTileSize - to : 0)) & (0xFFu << (from > 0 ? from : 0));
-        for (int k = 0; k < kTileSize; k += kFloatLanes) {
-          xsimd::select(lanes_of_bits<Arch>(whole >> k), Floats(1.0f), Floats(0.0f))
-              .store_unaligned(row + k);
-        }
-        tile.mask |= std::uint64_t{whole} << (r * kTileSize);
-      }
-      // The row's edges: those with a ramp first.
-      int ramps = 0, wholes = 0;
-      for (int e = 0; e < 3; ++e) {
-        if (bands.ramp[e][r] != 0.0) {
-          const AreaEdge& edge = edges[e];
-          row_edges.extent[ramps] = Doubles(edge.rising ? edge.right : edge.left);
-          row_edges.start[ramps] = Doubles(bands.start[e][r]);
-          row_edges.end[ramps] = Doubles(bands.end[e][r]);
-          row_edges.twice_start[ramps] = Doubles(bands.twice_start[e][r]);
-          row_edges.upper[ramps] = Doubles(edge.upper_weight);
-          row_edges.ramp[ramps] = Doubles(edge.ramp_weight);
-          ++ramps;
-        } else if (bands.whole[e][r] != 0.0) {
-          row_edges.left[wholes] = Doubles(edges[e].left);
-          row_edges.right[wholes] = Doubles(edges[e].right);
-          row_edges.whole[wholes] = Doubles(bands.whole[e][r]);
-          ++wholes;
-        }
-      }
+      area_walk_detail::fill_whole_span<Arch>(tiles, span_first, span_end, r, triangle,
+                                              first_tile_x, ty);
+      const area_walk_detail::RowEdgeCounts counts =
+          area_walk_detail::load_row_edges<Wide>(bands, edges, r, row_edges);
       // The candidates in x order: groups of lanes computed once.
       const auto order = [&](int i, int j) {
         if (first[j] < first[i]) {
@@ -207,38 +274,7 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
           computed_to = x > computed_to ? x : computed_to;
         }
       };
-      switch (ramps * 4 + wholes) {
-        case 0 * 4 + 1:
-          compute.template operator()<0, 1>();
-          break;
-        case 0 * 4 + 2:
-          compute.template operator()<0, 2>();
-          break;
-        case 0 * 4 + 3:
-          compute.template operator()<0, 3>();
-          break;
-        case 1 * 4 + 0:
-          compute.template operator()<1, 0>();
-          break;
-        case 1 * 4 + 1:
-          compute.template operator()<1, 1>();
-          break;
-        case 1 * 4 + 2:
-          compute.template operator()<1, 2>();
-          break;
-        case 2 * 4 + 0:
-          compute.template operator()<2, 0>();
-          break;
-        case 2 * 4 + 1:
-          compute.template operator()<2, 1>();
-          break;
-        case 3 * 4 + 0:
-          compute.template operator()<3, 0>();
-          break;
-        default:
-          compute.template operator()<0, 0>();
-          break;
-      }
+      area_walk_detail::with_edge_counts(counts, compute);
     }
     for (std::int32_t c = 0; c < columns; ++c) {
       if (tiles[c].tile_y != kUntouched && tiles[c].mask != 0) emit(tiles[c]);

@@ -101,6 +101,76 @@ void set_up_box_rows(const AreaEdge* edges, const int* ramp_edges, int ramps, st
   }
 }
 
+// The triangle's edges by kind, for the box walk: sloped ones have a ramp in every row (the
+// formula holds for any row, reached or not); a horizontal one adds its clamped height times its
+// clamped extent; vertical ones add nothing. Their constant terms go into `row_edges`.
+struct BoxEdgeKinds {
+  int ramp_edges[3] = {0, 0, 0};
+  int ramps = 0;
+  int horizontal = -1;
+};
+
+template <class Arch>
+[[gnu::always_inline]] inline BoxEdgeKinds sort_box_edges(const AreaEdge (&edges)[3],
+                                                          BoxRowEdges<Arch>& row_edges) {
+  using Doubles = xsimd::batch<double, Arch>;
+  BoxEdgeKinds kinds;
+  for (int e = 0; e < 3; ++e) {
+    const AreaEdge& edge = edges[e];
+    if (edge.horizontal) {
+      row_edges.left = Doubles(edge.left);
+      row_edges.right = Doubles(edge.right);
+      kinds.horizontal = e;
+    } else if (edge.sign != 0.0) {
+      row_edges.weight[kinds.ramps] = Doubles(edge.sign);
+      row_edges.ramp[kinds.ramps] = Doubles(edge.ramp_weight);
+      kinds.ramp_edges[kinds.ramps++] = e;
+    }
+  }
+  return kinds;
+}
+
+// Row r's terms (pixel row y) of the edges set up in `rows`, and the horizontal edge's height.
+template <int kRamp, int kWhole, class Arch>
+[[gnu::always_inline]] inline void load_box_row(const BoxRows& rows, int r, double y,
+                                                const AreaEdge* horizontal,
+                                                BoxRowEdges<Arch>& row_edges) {
+  using Doubles = xsimd::batch<double, Arch>;
+  for (int i = 0; i < kRamp; ++i) {
+    row_edges.start[i] = Doubles(rows.start[i][r]);
+    row_edges.end[i] = Doubles(rows.end[i][r]);
+    row_edges.offset[i] = Doubles(rows.offset[i][r]);
+    row_edges.from[i] = Doubles(rows.from[i][r]);
+    row_edges.to[i] = Doubles(rows.to[i][r]);
+  }
+  if constexpr (kWhole > 0) {
+    const double height = horizontal->y0 - y;
+    row_edges.whole =
+        Doubles(horizontal->sign * (height < 0.0 ? 0.0 : (height > 1.0 ? 1.0 : height)));
+  }
+}
+
+// The `columns` tiles of tile row ty from tile column first_tile_x, cleared.
+template <class Arch, class Storage>
+[[gnu::always_inline]] inline AreaTile* begin_box_tile_row(Storage& storage, std::int32_t columns,
+                                                           std::int32_t first_tile_x,
+                                                           std::int32_t ty,
+                                                           std::uint32_t triangle) {
+  using Floats = xsimd::batch<float, Arch>;
+  constexpr int kFloatLanes = static_cast<int>(Floats::size);
+  AreaTile* const tiles = storage.row(columns);
+  for (std::int32_t c = 0; c < columns; ++c) {
+    AreaTile& tile = tiles[c];
+    tile.triangle = triangle;
+    tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
+    tile.tile_y = static_cast<std::uint16_t>(ty);
+    tile.mask = 0;
+    for (int k = 0; k < kTileSize * kTileSize; k += kFloatLanes)
+      Floats(0.0f).store_unaligned(tile.area + k);
+  }
+  return tiles;
+}
+
 // Every pixel of the box by the lanes, a tile row at a time: tiles as walk_areas(). Along a row
 // the integral of the covered height, F(x) = integral from the box's left to x, is taken at
 // every pixel's left side, one lane per pixel, and a pixel's area is F(u + 1) - F(u): F at the
@@ -116,9 +186,7 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
               std::uint32_t triangle, Emit&& emit) {
   using Wide = WideArch<Arch>;
   using Doubles = xsimd::batch<double, Wide>;
-  using Floats = xsimd::batch<float, Arch>;
   constexpr std::int32_t kLanes = static_cast<std::int32_t>(Doubles::size);
-  constexpr int kFloatLanes = static_cast<int>(Floats::size);
   const std::int32_t first_tile_x = box.x0 / kTileSize;
   const std::int32_t origin = first_tile_x * kTileSize;
   const std::int32_t x_begin = box.x0 - origin, x_end = box.x1 - origin;
@@ -130,55 +198,21 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
     lane_offsets[l] = static_cast<double>(l);
   const Doubles lane_columns = Doubles::load_aligned(lane_offsets);
   const Doubles box_begin(static_cast<double>(x_begin)), box_end(static_cast<double>(x_end));
-  // The edges by kind, once for the triangle: sloped ones have a ramp in every row (the
-  // formula holds for any row, reached or not); a horizontal one adds its clamped height
-  // times its clamped extent; vertical ones add nothing.
-  int ramp_edges[3], ramps = 0, horizontal = -1;
   BoxRowEdges<Wide> row_edges;
-  for (int e = 0; e < 3; ++e) {
-    const AreaEdge& edge = edges[e];
-    if (edge.horizontal) {
-      row_edges.left = Doubles(edge.left);
-      row_edges.right = Doubles(edge.right);
-      horizontal = e;
-    } else if (edge.sign != 0.0) {
-      row_edges.weight[ramps] = Doubles(edge.sign);
-      row_edges.ramp[ramps] = Doubles(edge.ramp_weight);
-      ramp_edges[ramps++] = e;
-    }
-  }
+  const BoxEdgeKinds kinds = sort_box_edges<Wide>(edges, row_edges);
+  const AreaEdge* const horizontal = kinds.horizontal >= 0 ? &edges[kinds.horizontal] : nullptr;
   const std::int32_t group_begin = x_begin - x_begin % kLanes;
   BoxRows rows;
   const auto walk = [&]<int kRamp, int kWhole>() {
     for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
       const int r_begin = box.y0 > ty * kTileSize ? box.y0 - ty * kTileSize : 0;
       const int r_end = box.y1 < (ty + 1) * kTileSize ? box.y1 - ty * kTileSize : kTileSize;
-      set_up_box_rows<Wide>(edges, ramp_edges, kRamp, ty * kTileSize, r_begin, r_end, rows);
-      AreaTile* const tiles = storage.row(columns);
-      for (std::int32_t c = 0; c < columns; ++c) {
-        AreaTile& tile = tiles[c];
-        tile.triangle = triangle;
-        tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
-        tile.tile_y = static_cast<std::uint16_t>(ty);
-        tile.mask = 0;
-        for (int k = 0; k < kTileSize * kTileSize; k += kFloatLanes)
-          Floats(0.0f).store_unaligned(tile.area + k);
-      }
+      set_up_box_rows<Wide>(edges, kinds.ramp_edges, kRamp, ty * kTileSize, r_begin, r_end, rows);
+      AreaTile* const tiles =
+          begin_box_tile_row<Arch>(storage, columns, first_tile_x, ty, triangle);
       for (int r = r_begin; r < r_end; ++r) {
-        const double y = static_cast<double>(ty * kTileSize + r);
-        for (int i = 0; i < kRamp; ++i) {
-          row_edges.start[i] = Doubles(rows.start[i][r]);
-          row_edges.end[i] = Doubles(rows.end[i][r]);
-          row_edges.offset[i] = Doubles(rows.offset[i][r]);
-          row_edges.from[i] = Doubles(rows.from[i][r]);
-          row_edges.to[i] = Doubles(rows.to[i][r]);
-        }
-        if constexpr (kWhole > 0) {
-          const AreaEdge& edge = edges[horizontal];
-          const double height = edge.y0 - y;
-          row_edges.whole =
-              Doubles(edge.sign * (height < 0.0 ? 0.0 : (height > 1.0 ? 1.0 : height)));
-        }
+        load_box_row<kRamp, kWhole>(rows, r, static_cast<double>(ty * kTileSize + r), horizontal,
+                                    row_edges);
         // F at the pixels' right sides, and at the first one's left side where that pixel
         // lies in the box (else its lane is cleared).
         Doubles right_side = Doubles(static_cast<double>(group_begin + 1)) + lane_columns;
@@ -208,7 +242,7 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
     }
   };
   // A triangle has at most one horizontal edge, and at most one vertical edge.
-  switch (ramps * 2 + (horizontal >= 0 ? 1 : 0)) {
+  switch (kinds.ramps * 2 + (horizontal != nullptr ? 1 : 0)) {
     case 3 * 2 + 0:
       walk.template operator()<3, 0>();
       break;
