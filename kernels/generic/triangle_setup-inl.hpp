@@ -95,81 +95,119 @@ struct GroupCorners {
   bool valid[kSetupLanes<Arch>];
 };
 
-// Sets up a group of triangles at once. Every quantity of the analysis above is an integer of
-// at most 51 bits, so double lanes hold it exactly and every sum, difference and product below
-// is exact (products of two 25-bit values, sums of at most three 50-bit values); division by
-// 256 or 8 is exact, and floor() of an exact quotient is exact. Writes each lane's status and,
-// for drawn triangles, `visible` (the clipped box is not empty) and `setups`. Returns the lanes
-// that are drawn and visible, bit l for lane l.
+namespace setup_detail {
+
+// A group's lanes as doubles.
 template <class Arch>
-inline std::uint32_t setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip,
-                                     CullMode cull, TriangleSetup* setups, TriangleStatus* statuses,
-                                     bool* visible, const SampleReach& reach = {}) {
+[[gnu::always_inline]] inline xsimd::batch<double, Arch> load_lanes(const float* v) {
+  constexpr std::size_t kLanes = kSetupLanes<Arch>;
+  alignas(64) double lanes[kLanes];
+  for (std::size_t i = 0; i < kLanes; ++i)
+    lanes[i] = v[i];
+  return xsimd::batch<double, Arch>::load_aligned(lanes);
+}
+
+// Snaps the vertices to 1/256 pixel: scaling by 256 is exact; |scaled| <= 2^23 fails for NaN and
+// infinity, and after rounding (nearest, ties to even: the default mode) only exactly 2^23 can be
+// outside. Returns the lanes within the band; the others are zeroed so that nothing after sees
+// NaN, infinity or huge values (some ISAs convert to integers inside floor()), their status
+// decided apart.
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch_bool<double, Arch> snap_vertices(
+    const TriangleGroup<Arch>& in, xsimd::batch<double, Arch> (&x)[3],
+    xsimd::batch<double, Arch> (&y)[3]) {
   using D = xsimd::batch<double, Arch>;
-  static constexpr std::size_t kLanes = kSetupLanes<Arch>;  // static: lambdas may use it
-  const auto load = [](const float* v) {
-    alignas(64) double lanes[kLanes];
-    for (std::size_t i = 0; i < kLanes; ++i)
-      lanes[i] = v[i];
-    return D::load_aligned(lanes);
-  };
-  // Snap: scaling by 256 is exact; |scaled| <= 2^23 fails for NaN and infinity, and after
-  // rounding (nearest, ties to even: the default mode) only exactly 2^23 can be outside.
   const D kBand(static_cast<double>(kGuardBandFixed));
   auto in_band = D(0.0) == D(0.0);
-  D x[3], y[3];
   for (int i = 0; i < 3; ++i) {
-    const D sx = load(in.x[i]) * D(256.0), sy = load(in.y[i]) * D(256.0);
+    const D sx = load_lanes<Arch>(in.x[i]) * D(256.0), sy = load_lanes<Arch>(in.y[i]) * D(256.0);
     x[i] = xsimd::nearbyint(sx);
     y[i] = xsimd::nearbyint(sy);
     in_band = in_band && xsimd::abs(sx) <= kBand && xsimd::abs(sy) <= kBand && x[i] < kBand &&
               y[i] < kBand;
   }
-  // Lanes that failed are zeroed so that nothing below sees NaN, infinity or huge values
-  // (some ISAs convert to integers inside floor()); their status is decided apart.
   for (int i = 0; i < 3; ++i) {
     x[i] = xsimd::select(in_band, x[i], D(0.0));
     y[i] = xsimd::select(in_band, y[i], D(0.0));
   }
-  // Twice the signed area; positive is clockwise on screen (y down).
+  return in_band;
+}
+
+// Twice the signed area (positive is clockwise on screen, y down), after which vertices 1 and 2
+// of counter-clockwise lanes are swapped so that every edge function is positive inside.
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<double, Arch> wind_clockwise(
+    xsimd::batch<double, Arch> (&x)[3], xsimd::batch<double, Arch> (&y)[3]) {
+  using D = xsimd::batch<double, Arch>;
   const D area2 = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
-  const auto clockwise = area2 > D(0.0);
   const auto counter_clockwise = area2 < D(0.0);
-  // Make every edge function positive inside.
   const D x1 = xsimd::select(counter_clockwise, x[2], x[1]);
   const D y1 = xsimd::select(counter_clockwise, y[2], y[1]);
   x[2] = xsimd::select(counter_clockwise, x[1], x[2]);
   y[2] = xsimd::select(counter_clockwise, y[1], y[2]);
   x[1] = x1;
   y[1] = y1;
+  return area2;
+}
 
-  // Pixels with a sample 256 i + 128 + s (s within the reach) within [min, max] of the snapped
-  // vertices, clipped: i from ceil((min - 128 - s_max) / 256) to floor((max - 128 - s_min) / 256).
+// The pixels a group's triangles may reach and the walk's start and extent.
+template <class Arch>
+struct GroupBoxes {
+  using D = xsimd::batch<double, Arch>;
+  D x0, y0, x1, y1;      // clipped, [x0, x1) x [y0, y1)
+  D extent;              // the larger side before clipping, at most kMaxExtent
+  D origin_x, origin_y;  // the first tile's top-left pixel
+  D reach_x, reach_y;    // how far past the origin the walk reaches, in pixels
+};
+
+// Pixels with a sample 256 i + 128 + s (s within the reach) within [min, max] of the snapped
+// vertices, clipped: i from ceil((min - 128 - s_max) / 256) to floor((max - 128 - s_min) / 256).
+template <class Arch>
+[[gnu::always_inline]] inline GroupBoxes<Arch> group_boxes(const xsimd::batch<double, Arch> (&x)[3],
+                                                           const xsimd::batch<double, Arch> (&y)[3],
+                                                           const PixelRect& clip,
+                                                           const SampleReach& reach) {
+  using D = xsimd::batch<double, Arch>;
   const D kInvPixel(1.0 / 256.0), kInvTile(1.0 / kTileSize), kTile(kTileSize);
   const D min_x = xsimd::min(xsimd::min(x[0], x[1]), x[2]) - D(reach.x_max);
   const D max_x = xsimd::max(xsimd::max(x[0], x[1]), x[2]) - D(reach.x_min);
   const D min_y = xsimd::min(xsimd::min(y[0], y[1]), y[2]) - D(reach.y_max);
   const D max_y = xsimd::max(xsimd::max(y[0], y[1]), y[2]) - D(reach.y_min);
-  const D box_x0 = xsimd::max(xsimd::floor((min_x + D(127.0)) * kInvPixel), D(clip.x0));
-  const D box_y0 = xsimd::max(xsimd::floor((min_y + D(127.0)) * kInvPixel), D(clip.y0));
-  const D box_x1 = xsimd::min(xsimd::floor((max_x - D(128.0)) * kInvPixel) + D(1.0), D(clip.x1));
-  const D box_y1 = xsimd::min(xsimd::floor((max_y - D(128.0)) * kInvPixel) + D(1.0), D(clip.y1));
-  const auto nonempty = box_x0 < box_x1 && box_y0 < box_y1;
-  const D extent = xsimd::min(xsimd::max(xsimd::floor((max_x - D(128.0)) * kInvPixel) -
-                                             xsimd::floor((min_x + D(127.0)) * kInvPixel),
-                                         xsimd::floor((max_y - D(128.0)) * kInvPixel) -
-                                             xsimd::floor((min_y + D(127.0)) * kInvPixel)) +
-                                  D(1.0),
-                              D(kMaxExtent));
-  const D origin_x = xsimd::floor(box_x0 * kInvTile) * kTile;
-  const D origin_y = xsimd::floor(box_y0 * kInvTile) * kTile;
+  GroupBoxes<Arch> b;
+  b.x0 = xsimd::max(xsimd::floor((min_x + D(127.0)) * kInvPixel), D(clip.x0));
+  b.y0 = xsimd::max(xsimd::floor((min_y + D(127.0)) * kInvPixel), D(clip.y0));
+  b.x1 = xsimd::min(xsimd::floor((max_x - D(128.0)) * kInvPixel) + D(1.0), D(clip.x1));
+  b.y1 = xsimd::min(xsimd::floor((max_y - D(128.0)) * kInvPixel) + D(1.0), D(clip.y1));
+  b.extent = xsimd::min(xsimd::max(xsimd::floor((max_x - D(128.0)) * kInvPixel) -
+                                       xsimd::floor((min_x + D(127.0)) * kInvPixel),
+                                   xsimd::floor((max_y - D(128.0)) * kInvPixel) -
+                                       xsimd::floor((min_y + D(127.0)) * kInvPixel)) +
+                            D(1.0),
+                        D(kMaxExtent));
+  b.origin_x = xsimd::floor(b.x0 * kInvTile) * kTile;
+  b.origin_y = xsimd::floor(b.y0 * kInvTile) * kTile;
   // The walk reaches one tile past the last in each direction, plus 7 samples within a tile.
-  const D reach_x = xsimd::floor((box_x1 - D(1.0) - origin_x) * kInvTile) * kTile + D(15.0);
-  const D reach_y = xsimd::floor((box_y1 - D(1.0) - origin_y) * kInvTile) * kTile + D(15.0);
-  const D px = origin_x * D(256.0) + D(128.0), py = origin_y * D(256.0) + D(128.0);
+  b.reach_x = xsimd::floor((b.x1 - D(1.0) - b.origin_x) * kInvTile) * kTile + D(15.0);
+  b.reach_y = xsimd::floor((b.y1 - D(1.0) - b.origin_y) * kInvTile) * kTile + D(15.0);
+  return b;
+}
 
-  alignas(64) double a[3][kLanes], b[3][kLanes], g[3][kLanes], remainder[3][kLanes];
-  auto narrow = in_band;
+// Each edge's A, B, G at the first tile's first sample and remainder, per lane; returns the lanes
+// whose edge values stay within 32 bits over the walk (`narrow`, from the lanes given).
+template <class Arch>
+struct GroupEdges {
+  alignas(64) double a[3][kSetupLanes<Arch>], b[3][kSetupLanes<Arch>];
+  alignas(64) double g[3][kSetupLanes<Arch>], remainder[3][kSetupLanes<Arch>];
+};
+
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch_bool<double, Arch> group_edges(
+    const xsimd::batch<double, Arch> (&x)[3], const xsimd::batch<double, Arch> (&y)[3],
+    const GroupBoxes<Arch>& boxes, const SampleReach& reach, xsimd::batch_bool<double, Arch> narrow,
+    GroupEdges<Arch>& out) {
+  using D = xsimd::batch<double, Arch>;
+  const D kInvPixel(1.0 / 256.0);
+  const D px = boxes.origin_x * D(256.0) + D(128.0), py = boxes.origin_y * D(256.0) + D(128.0);
   // A sample off the centre moves G by at most (|A| |s_x| + |B| |s_y|) / 256 + 1.
   const D sample_x(std::max(std::abs(reach.x_min), std::abs(reach.x_max)));
   const D sample_y(std::max(std::abs(reach.y_min), std::abs(reach.y_max)));
@@ -183,63 +221,106 @@ inline std::uint32_t setup_triangles(const TriangleGroup<Arch>& in, const PixelR
     const D ge = xsimd::floor(biased * kInvPixel);
     const D sample_shift =
         (xsimd::abs(ea) * sample_x + xsimd::abs(eb) * sample_y) * kInvPixel + sample_slack;
-    narrow = narrow &&
-             xsimd::abs(ge) + xsimd::abs(ea) * reach_x + xsimd::abs(eb) * reach_y + sample_shift <=
-                 D(INT32_MAX);
-    ea.store_aligned(a[e]);
-    eb.store_aligned(b[e]);
-    ge.store_aligned(g[e]);
-    (biased - ge * D(256.0)).store_aligned(remainder[e]);
+    narrow = narrow && xsimd::abs(ge) + xsimd::abs(ea) * boxes.reach_x +
+                               xsimd::abs(eb) * boxes.reach_y + sample_shift <=
+                           D(INT32_MAX);
+    ea.store_aligned(out.a[e]);
+    eb.store_aligned(out.b[e]);
+    ge.store_aligned(out.g[e]);
+    (biased - ge * D(256.0)).store_aligned(out.remainder[e]);
   }
+  return narrow;
+}
 
-  alignas(64) double box[4][kLanes], origin[2][kLanes], flags[5][kLanes], extents[kLanes];
-  extent.store_aligned(extents);
-  box_x0.store_aligned(box[0]);
-  box_y0.store_aligned(box[1]);
-  box_x1.store_aligned(box[2]);
-  box_y1.store_aligned(box[3]);
-  origin_x.store_aligned(origin[0]);
-  origin_y.store_aligned(origin[1]);
-  const D one(1.0), zero(0.0);
-  xsimd::select(in_band, one, zero).store_aligned(flags[0]);
-  xsimd::select(area2 == zero, one, zero).store_aligned(flags[1]);
-  const auto never = zero != zero;
-  const auto culled = cull == CullMode::clockwise           ? clockwise
-                      : cull == CullMode::counter_clockwise ? counter_clockwise
-                                                            : never;
-  xsimd::select(culled, one, zero).store_aligned(flags[2]);
-  xsimd::select(nonempty, one, zero).store_aligned(flags[3]);
-  xsimd::select(narrow, one, zero).store_aligned(flags[4]);
+// The lanes' outcomes as 0 or 1 per lane, for the scalar write-out.
+template <class Arch>
+struct GroupFlags {
+  alignas(64) double box[4][kSetupLanes<Arch>], origin[2][kSetupLanes<Arch>];
+  alignas(64) double in_band[kSetupLanes<Arch>], zero_area[kSetupLanes<Arch>];
+  alignas(64) double culled[kSetupLanes<Arch>], nonempty[kSetupLanes<Arch>];
+  alignas(64) double narrow[kSetupLanes<Arch>], extent[kSetupLanes<Arch>];
+};
 
+// Each lane's status and, for drawn triangles, `visible` and `setups`; returns the visible lanes.
+template <class Arch>
+[[gnu::always_inline]] inline std::uint32_t write_setups(const TriangleGroup<Arch>& in,
+                                                         const GroupEdges<Arch>& edges,
+                                                         const GroupFlags<Arch>& flags,
+                                                         TriangleSetup* setups,
+                                                         TriangleStatus* statuses, bool* visible) {
   std::uint32_t visible_lanes = 0;
-  for (std::size_t l = 0; l < kLanes; ++l) {
-    if (flags[0][l] == 0.0) {
+  for (std::size_t l = 0; l < kSetupLanes<Arch>; ++l) {
+    if (flags.in_band[l] == 0.0) {
       statuses[l] =
           snap_failure(in.x[0][l], in.y[0][l], in.x[1][l], in.y[1][l], in.x[2][l], in.y[2][l]);
-    } else if (flags[1][l] != 0.0) {
+    } else if (flags.zero_area[l] != 0.0) {
       statuses[l] = TriangleStatus::culled_zero_area;
-    } else if (flags[2][l] != 0.0) {
+    } else if (flags.culled[l] != 0.0) {
       statuses[l] = TriangleStatus::culled_winding;
     } else {
       statuses[l] = TriangleStatus::drawn;
     }
-    visible[l] = statuses[l] == TriangleStatus::drawn && flags[3][l] != 0.0;
+    visible[l] = statuses[l] == TriangleStatus::drawn && flags.nonempty[l] != 0.0;
     if (!visible[l]) continue;
     visible_lanes |= 1u << l;
     TriangleSetup& setup = setups[l];
     for (int e = 0; e < 3; ++e) {
-      setup.edge[e] = {static_cast<std::int32_t>(a[e][l]), static_cast<std::int32_t>(b[e][l]),
-                       static_cast<std::int64_t>(g[e][l]),
-                       static_cast<std::int32_t>(remainder[e][l])};
+      setup.edge[e] = {static_cast<std::int32_t>(edges.a[e][l]),
+                       static_cast<std::int32_t>(edges.b[e][l]),
+                       static_cast<std::int64_t>(edges.g[e][l]),
+                       static_cast<std::int32_t>(edges.remainder[e][l])};
     }
-    setup.box = {static_cast<std::int32_t>(box[0][l]), static_cast<std::int32_t>(box[1][l]),
-                 static_cast<std::int32_t>(box[2][l]), static_cast<std::int32_t>(box[3][l])};
-    setup.origin_x = static_cast<std::int32_t>(origin[0][l]);
-    setup.origin_y = static_cast<std::int32_t>(origin[1][l]);
-    setup.extent = static_cast<std::int32_t>(extents[l]);
-    setup.narrow = flags[4][l] != 0.0;
+    setup.box = {
+        static_cast<std::int32_t>(flags.box[0][l]), static_cast<std::int32_t>(flags.box[1][l]),
+        static_cast<std::int32_t>(flags.box[2][l]), static_cast<std::int32_t>(flags.box[3][l])};
+    setup.origin_x = static_cast<std::int32_t>(flags.origin[0][l]);
+    setup.origin_y = static_cast<std::int32_t>(flags.origin[1][l]);
+    setup.extent = static_cast<std::int32_t>(flags.extent[l]);
+    setup.narrow = flags.narrow[l] != 0.0;
   }
   return visible_lanes;
+}
+
+}  // namespace setup_detail
+
+// Sets up a group of triangles at once. Every quantity of the analysis above is an integer of
+// at most 51 bits, so double lanes hold it exactly and every sum, difference and product below
+// is exact (products of two 25-bit values, sums of at most three 50-bit values); division by
+// 256 or 8 is exact, and floor() of an exact quotient is exact. Writes each lane's status and,
+// for drawn triangles, `visible` (the clipped box is not empty) and `setups`. Returns the lanes
+// that are drawn and visible, bit l for lane l.
+template <class Arch>
+inline std::uint32_t setup_triangles(const TriangleGroup<Arch>& in, const PixelRect& clip,
+                                     CullMode cull, TriangleSetup* setups, TriangleStatus* statuses,
+                                     bool* visible, const SampleReach& reach = {}) {
+  using D = xsimd::batch<double, Arch>;
+  D x[3], y[3];
+  const auto in_band = setup_detail::snap_vertices(in, x, y);
+  const D area2 = setup_detail::wind_clockwise(x, y);
+  const setup_detail::GroupBoxes<Arch> boxes = setup_detail::group_boxes(x, y, clip, reach);
+  setup_detail::GroupEdges<Arch> edges;
+  const auto narrow = setup_detail::group_edges(x, y, boxes, reach, in_band, edges);
+
+  setup_detail::GroupFlags<Arch> flags;
+  boxes.extent.store_aligned(flags.extent);
+  boxes.x0.store_aligned(flags.box[0]);
+  boxes.y0.store_aligned(flags.box[1]);
+  boxes.x1.store_aligned(flags.box[2]);
+  boxes.y1.store_aligned(flags.box[3]);
+  boxes.origin_x.store_aligned(flags.origin[0]);
+  boxes.origin_y.store_aligned(flags.origin[1]);
+  const D one(1.0), zero(0.0);
+  xsimd::select(in_band, one, zero).store_aligned(flags.in_band);
+  xsimd::select(area2 == zero, one, zero).store_aligned(flags.zero_area);
+  const auto never = zero != zero;
+  const auto culled = cull == CullMode::clockwise           ? area2 > zero
+                      : cull == CullMode::counter_clockwise ? area2 < zero
+                                                            : never;
+  xsimd::select(culled, one, zero).store_aligned(flags.culled);
+  xsimd::select(boxes.x0 < boxes.x1 && boxes.y0 < boxes.y1, one, zero)
+      .store_aligned(flags.nonempty);
+  xsimd::select(narrow, one, zero).store_aligned(flags.narrow);
+  return setup_detail::write_setups(in, edges, flags, setups, statuses, visible);
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE
