@@ -106,6 +106,84 @@ inline DropDecision drop_decision(const Vec2* vertices, std::size_t vertex_count
   }
 }
 
+namespace culling_detail {
+
+// A box's bin (single_bin_of()) per lane, or kSeveralBins as -1; a grid of one bin without one.
+template <class Arch>
+struct BinLanes {
+  using Floats = xsimd::batch<float, Arch>;
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+
+  explicit BinLanes(const detail::BinGrid* grid)
+      : width_shift(grid != nullptr ? grid->width_shift : 0),
+        height_shift(grid != nullptr ? grid->height_shift : 0),
+        first_column(grid != nullptr ? grid->first_column : 0),
+        first_row(grid != nullptr ? grid->first_row : 0),
+        columns(grid != nullptr ? grid->columns : 0) {}
+
+  [[gnu::always_inline]] Ints of(Floats x0, Floats x1, Floats y0, Floats y1) const {
+    const Ints column0 = xsimd::batch_cast<std::int32_t>(x0) >> width_shift;
+    const Ints column1 = xsimd::batch_cast<std::int32_t>(x1) >> width_shift;
+    const Ints row0 = xsimd::batch_cast<std::int32_t>(y0) >> height_shift;
+    const Ints row1 = xsimd::batch_cast<std::int32_t>(y1) >> height_shift;
+    const Ints bin = (row0 - first_row) * columns + (column0 - first_column);
+    return xsimd::select(column0 == column1 && row0 == row1, bin, Ints(-1));
+  }
+
+  int width_shift, height_shift;
+  Ints first_column, first_row, columns;
+};
+
+// The first and last pixels of a box on one axis: those with a sample within the vertices'
+// bounds (pixel i's samples lie from i + 1/2 - r to i + 1/2 + r: to_first = 1/2 + r, to_last =
+// 1/2 - r), in the clip rectangle (from `first` to `last`).
+template <class Arch>
+[[gnu::always_inline]] inline void box_span(const xsimd::batch<float, Arch> (&v)[3],
+                                            xsimd::batch<float, Arch> to_first,
+                                            xsimd::batch<float, Arch> to_last,
+                                            xsimd::batch<float, Arch> first,
+                                            xsimd::batch<float, Arch> last,
+                                            xsimd::batch<float, Arch>& from,
+                                            xsimd::batch<float, Arch>& to) {
+  const auto lo = xsimd::min(xsimd::min(v[0], v[1]), v[2]);
+  const auto hi = xsimd::max(xsimd::max(v[0], v[1]), v[2]);
+  from = xsimd::max(xsimd::ceil(lo - to_first), first);
+  to = xsimd::min(xsimd::floor(hi - to_last), last);
+}
+
+// The corners of triangles [first, first + count) of `corners` (count at most the lanes; lanes
+// past the end repeat the last triangle) and their positions; returns the lanes whose three
+// indices lie within [0, last_vertex] (the others read vertex 0).
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch_bool<float, Arch> load_group_positions(
+    const std::int32_t* corners, std::size_t first, std::size_t count, const float* xy,
+    xsimd::batch<std::int32_t, Arch> last_vertex, xsimd::batch<float, Arch> (&x)[3],
+    xsimd::batch<float, Arch> (&y)[3]) {
+  using Floats = xsimd::batch<float, Arch>;
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  static constexpr std::int32_t kLaneIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  static_assert(Ints::size <= 8);
+  Ints v[3];
+  if (count == Ints::size) {
+    load_records3_int32<Arch>(corners + 3 * first, v);
+  } else {
+    const Ints lane = Ints::load_unaligned(kLaneIndex);
+    const Ints at = xsimd::min(lane, Ints(static_cast<std::int32_t>(count - 1))) * Ints(3);
+    for (int i = 0; i < 3; ++i)
+      v[i] = gather_int32<Arch>(corners + 3 * first + i, at);
+  }
+  auto in_range = Ints(0) == Ints(0);
+  for (int i = 0; i < 3; ++i) {
+    // As int32, an index of 2^31 or more is negative: out of range too.
+    const auto valid = v[i] >= Ints(0) && v[i] <= last_vertex;
+    in_range = in_range && valid;
+    gather_float_pairs<Arch>(xy, xsimd::select(valid, v[i], Ints(0)), x[i], y[i]);
+  }
+  return xsimd::batch_cast<float>(xsimd::select(in_range, Ints(1), Ints(0))) == Floats(1.0f);
+}
+
+}  // namespace culling_detail
+
 // Drops from `indices` (three per triangle, into `vertices`) every triangle set-up would cull,
 // by its winding under `cull` or for zero area after snapping, and every one it would draw with
 // no sample of `window` in its box; the others keep their order at the front, with their bins
@@ -119,11 +197,8 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
   using Floats = xsimd::batch<float, Arch>;
   using Ints = xsimd::batch<std::int32_t, Arch>;
   constexpr std::size_t kLanes = Floats::size;
-  static constexpr std::int32_t kLaneIndex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-  static_assert(kLanes <= 8);
   // Lanes address coordinates by 32-bit offsets: larger arrays take the double arithmetic alone.
   const bool lanes_reach = vertex_count <= (std::size_t{1} << 29);
-  const Ints lane = Ints::load_unaligned(kLaneIndex);
   const Ints last_vertex(static_cast<std::int32_t>(vertex_count - 1));
   const Floats band(static_cast<float>(kGuardBand));
   const float* xy = &vertices->x;
@@ -139,30 +214,8 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
   const Floats clip_y0(static_cast<float>(window.clip.y0));
   const Floats clip_x1(static_cast<float>(window.clip.x1 - 1));
   const Floats clip_y1(static_cast<float>(window.clip.y1 - 1));
-  // The first and last pixels of the box on one axis: those with a sample within the vertices'
-  // bounds, in the clip rectangle (from `first` to `last`).
-  const auto box_span = [&](const Floats(&v)[3], Floats first, Floats last, Floats& from,
-                            Floats& to) {
-    const Floats lo = xsimd::min(xsimd::min(v[0], v[1]), v[2]);
-    const Floats hi = xsimd::max(xsimd::max(v[0], v[1]), v[2]);
-    from = xsimd::max(xsimd::ceil(lo - to_first), first);
-    to = xsimd::min(xsimd::floor(hi - to_last), last);
-  };
-  // A box's bin (single_bin_of()), or kSeveralBins as -1.
   const detail::BinGrid* grid = output.grid;
-  const int width_shift = grid != nullptr ? grid->width_shift : 0;
-  const int height_shift = grid != nullptr ? grid->height_shift : 0;
-  const Ints first_column(grid != nullptr ? grid->first_column : 0);
-  const Ints first_row(grid != nullptr ? grid->first_row : 0);
-  const Ints columns(grid != nullptr ? grid->columns : 0);
-  const auto bin_of_box = [&](Floats x0, Floats x1, Floats y0, Floats y1) {
-    const Ints column0 = xsimd::batch_cast<std::int32_t>(x0) >> width_shift;
-    const Ints column1 = xsimd::batch_cast<std::int32_t>(x1) >> width_shift;
-    const Ints row0 = xsimd::batch_cast<std::int32_t>(y0) >> height_shift;
-    const Ints row1 = xsimd::batch_cast<std::int32_t>(y1) >> height_shift;
-    const Ints bin = (row0 - first_row) * columns + (column0 - first_column);
-    return xsimd::select(column0 == column1 && row0 == row1, bin, Ints(-1));
-  };
+  const culling_detail::BinLanes<Arch> bins(grid);
   detail::DroppedTriangles result;
   std::size_t& kept = result.kept;
   for (std::size_t first = 0; first < triangles; first += kLanes) {
@@ -170,25 +223,9 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
     std::uint32_t dropped = 0, unseen = 0, undecided = (1u << count) - 1;
     alignas(64) std::uint32_t lane_bins[kLanes];
     if (lanes_reach && vertex_count != 0) {
-      Ints v[3];
-      if (count == kLanes) {
-        load_records3_int32<Arch>(corners + 3 * first, v);
-      } else {
-        // Lanes past the end repeat the last triangle; they are never stored.
-        const Ints at = xsimd::min(lane, Ints(static_cast<std::int32_t>(count - 1))) * Ints(3);
-        for (int i = 0; i < 3; ++i)
-          v[i] = gather_int32<Arch>(corners + 3 * first + i, at);
-      }
-      auto in_range = Ints(0) == Ints(0);
       Floats x[3], y[3];
-      for (int i = 0; i < 3; ++i) {
-        // As int32, an index of 2^31 or more is negative: out of range too.
-        const auto valid = v[i] >= Ints(0) && v[i] <= last_vertex;
-        in_range = in_range && valid;
-        gather_float_pairs<Arch>(xy, xsimd::select(valid, v[i], Ints(0)), x[i], y[i]);
-      }
       auto exact =
-          xsimd::batch_cast<float>(xsimd::select(in_range, Ints(1), Ints(0))) == Floats(1.0f);
+          culling_detail::load_group_positions<Arch>(corners, first, count, xy, last_vertex, x, y);
       for (int i = 0; i < 3; ++i)
         exact = exact && snapped_in_band(x[i]) && snapped_in_band(y[i]);
       const Floats p = (x[1] - x[0]) * (y[2] - y[0]), q = (y[1] - y[0]) * (x[2] - x[0]);
@@ -197,12 +234,12 @@ detail::DroppedTriangles drop_culled_triangle_list(const Vec2* vertices, std::si
                                : cull == CullMode::counter_clockwise ? p < q
                                                                      : Floats(0.0f) != Floats(0.0f);
       Floats x0, x1, y0, y1;
-      box_span(x, clip_x0, clip_x1, x0, x1);
-      box_span(y, clip_y0, clip_y1, y0, y1);
+      culling_detail::box_span<Arch>(x, to_first, to_last, clip_x0, clip_x1, x0, x1);
+      culling_detail::box_span<Arch>(y, to_first, to_last, clip_y0, clip_y1, y0, y1);
       const auto empty = !(x0 <= x1 && y0 <= y1);
       // Lanes that are not exact, or not kept, are decided below or never stored.
       if (grid != nullptr) {
-        bin_of_box(x0, x1, y0, y1).store_aligned(reinterpret_cast<std::int32_t*>(lane_bins));
+        bins.of(x0, x1, y0, y1).store_aligned(reinterpret_cast<std::int32_t*>(lane_bins));
       }
       // Lanes past the end (bits from `count` on) are left out of the counts.
       dropped = bits_of_lanes<Arch>(exact && facing_away) & undecided;
