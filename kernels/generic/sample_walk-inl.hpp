@@ -43,6 +43,41 @@ inline SampleReach sample_reach(std::span<const SampleOffset> pattern) {
   return reach;
 }
 
+// Per edge: each sample's offset of G from the pixel centre's (delta), G's steps per tile, and
+// the offsets from a tile's G to its extreme samples, for rejecting and accepting whole tiles.
+template <class Int>
+struct SampleEdgeSteps {
+  Int delta[3][kMaxSamples];
+  Int step_x[3], step_y[3], reject_offset[3], accept_offset[3];
+};
+
+template <class Int>
+[[gnu::always_inline]] inline SampleEdgeSteps<Int> sample_edge_steps(
+    const TriangleSetup& setup, std::span<const SampleOffset> pattern) {
+  SampleEdgeSteps<Int> steps;
+  for (int e = 0; e < 3; ++e) {
+    const EdgeSetup& edge = setup.edge[e];
+    Int most = 0, least = 0;
+    for (std::size_t k = 0; k < pattern.size(); ++k) {
+      const std::int64_t moved = std::int64_t{edge.remainder} +
+                                 std::int64_t{edge.a} * 16 * pattern[k].x +
+                                 std::int64_t{edge.b} * 16 * pattern[k].y;
+      steps.delta[e][k] = static_cast<Int>(moved >> 8);  // floor division by 256
+      most = k == 0 || steps.delta[e][k] > most ? steps.delta[e][k] : most;
+      least = k == 0 || steps.delta[e][k] < least ? steps.delta[e][k] : least;
+    }
+    steps.step_x[e] = static_cast<Int>(edge.a) * kTileSize;
+    steps.step_y[e] = static_cast<Int>(edge.b) * kTileSize;
+    // The tile's extreme sample for this edge, moved by the sample that gains the most.
+    steps.reject_offset[e] =
+        (kTileSize - 1) * ((edge.a > 0 ? edge.a : 0) + (edge.b > 0 ? edge.b : 0)) + most;
+    // The sample least inside: the other extreme, moved by the sample that loses the most.
+    steps.accept_offset[e] =
+        (kTileSize - 1) * ((edge.a < 0 ? edge.a : 0) + (edge.b < 0 ? edge.b : 0)) + least;
+  }
+  return steps;
+}
+
 // Calls visitor.sample_tile(tile_x, tile_y, masks) for every tile with a covered sample, in row
 // order; masks[k] holds sample k's coverage (bit y * 8 + x), masks.size() the pattern's count.
 // Int is the type G steps in: int32 when setup.narrow (set up with the pattern's reach), else
@@ -52,28 +87,12 @@ template <class Arch, class Int, class Visitor>
                                          std::span<const SampleOffset> pattern, Visitor& visitor) {
   const std::size_t samples = pattern.size();
   const TileEvaluator<WideArch<Arch>> evaluator(setup);
-  Int delta[3][kMaxSamples];
-  Int step_x[3], step_y[3], reject_offset[3], accept_offset[3];
-  for (int e = 0; e < 3; ++e) {
-    const EdgeSetup& edge = setup.edge[e];
-    Int most = 0, least = 0;
-    for (std::size_t k = 0; k < samples; ++k) {
-      const std::int64_t moved = std::int64_t{edge.remainder} +
-                                 std::int64_t{edge.a} * 16 * pattern[k].x +
-                                 std::int64_t{edge.b} * 16 * pattern[k].y;
-      delta[e][k] = static_cast<Int>(moved >> 8);  // floor division by 256
-      most = k == 0 || delta[e][k] > most ? delta[e][k] : most;
-      least = k == 0 || delta[e][k] < least ? delta[e][k] : least;
-    }
-    step_x[e] = static_cast<Int>(edge.a) * kTileSize;
-    step_y[e] = static_cast<Int>(edge.b) * kTileSize;
-    // The tile's extreme sample for this edge, moved by the sample that gains the most.
-    reject_offset[e] =
-        (kTileSize - 1) * ((edge.a > 0 ? edge.a : 0) + (edge.b > 0 ? edge.b : 0)) + most;
-    // The sample least inside: the other extreme, moved by the sample that loses the most.
-    accept_offset[e] =
-        (kTileSize - 1) * ((edge.a < 0 ? edge.a : 0) + (edge.b < 0 ? edge.b : 0)) + least;
-  }
+  const SampleEdgeSteps<Int> steps = sample_edge_steps<Int>(setup, pattern);
+  const auto& delta = steps.delta;
+  const auto& step_x = steps.step_x;
+  const auto& step_y = steps.step_y;
+  const auto& reject_offset = steps.reject_offset;
+  const auto& accept_offset = steps.accept_offset;
   const PixelRect& box = setup.box;
   const std::uint32_t first_tile_x = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
   Int row_g[3];
