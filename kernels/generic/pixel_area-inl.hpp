@@ -91,14 +91,7 @@ template <class Arch>
   constexpr int kFloatLanes = static_cast<int>(Floats::size);
   for (std::int32_t c = span_first / kTileSize; c <= (span_end - 1) / kTileSize; ++c) {
     AreaTile& tile = tiles[c];
-    if (tile.tile_y == kUntouched) {
-      tile.triangle = triangle;
-      tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
-      tile.tile_y = static_cast<std::uint16_t>(ty);
-      tile.mask = 0;
-      for (int k = 0; k < kTileSize * kTileSize; k += kFloatLanes)
-        Floats(0.0f).store_unaligned(tile.area + k);
-    }
+    if (tile.tile_y == kUntouched) clear_area_tile<Arch>(tile, triangle, first_tile_x + c, ty);
     const std::int32_t from = span_first - c * kTileSize, to = span_end - c * kTileSize;
     float* row = tile.area + r * kTileSize;
     if (from <= 0 && to >= kTileSize) {

@@ -156,18 +156,9 @@ template <class Arch, class Storage>
                                                            std::int32_t first_tile_x,
                                                            std::int32_t ty,
                                                            std::uint32_t triangle) {
-  using Floats = xsimd::batch<float, Arch>;
-  constexpr int kFloatLanes = static_cast<int>(Floats::size);
   AreaTile* const tiles = storage.row(columns);
-  for (std::int32_t c = 0; c < columns; ++c) {
-    AreaTile& tile = tiles[c];
-    tile.triangle = triangle;
-    tile.tile_x = static_cast<std::uint16_t>(first_tile_x + c);
-    tile.tile_y = static_cast<std::uint16_t>(ty);
-    tile.mask = 0;
-    for (int k = 0; k < kTileSize * kTileSize; k += kFloatLanes)
-      Floats(0.0f).store_unaligned(tile.area + k);
-  }
+  for (std::int32_t c = 0; c < columns; ++c)
+    clear_area_tile<Arch>(tiles[c], triangle, first_tile_x + c, ty);
   return tiles;
 }
 

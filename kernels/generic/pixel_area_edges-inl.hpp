@@ -76,6 +76,19 @@ inline void set_up_area_edges(const AreaTriangle& tri, std::int32_t origin_x, Ar
   }
 }
 
+// Tile (tile_x, tile_y) of `triangle`, with no area yet.
+template <class Arch>
+[[gnu::always_inline]] inline void clear_area_tile(AreaTile& tile, std::uint32_t triangle,
+                                                   std::int32_t tile_x, std::int32_t tile_y) {
+  using Floats = xsimd::batch<float, Arch>;
+  tile.triangle = triangle;
+  tile.tile_x = static_cast<std::uint16_t>(tile_x);
+  tile.tile_y = static_cast<std::uint16_t>(tile_y);
+  tile.mask = 0;
+  for (int k = 0; k < kTileSize * kTileSize; k += static_cast<int>(Floats::size))
+    Floats(0.0f).store_unaligned(tile.area + k);
+}
+
 // Pixel ranges are widened by this (pixels) each way: far more than the crossings' error
 // (2^-35.5), so a pixel a piece touches is never left out; a pixel it only grazes gets its area
 // computed, which is exact too.
