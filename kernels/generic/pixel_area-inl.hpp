@@ -215,10 +215,7 @@ void walk_areas(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
   const std::int32_t columns = (box.x1 - 1) / kTileSize - first_tile_x + 1;
   AreaEdge edges[3];
   set_up_area_edges(tri, origin, edges);
-  alignas(64) double lane_offsets[kLanes];
-  for (int l = 0; l < kLanes; ++l)
-    lane_offsets[l] = static_cast<double>(l);
-  const Doubles lane_columns = Doubles::load_aligned(lane_offsets);
+  const Doubles lane_columns = lane_offsets<Wide>();
   const Doubles box_begin(static_cast<double>(x_begin)), box_end(static_cast<double>(x_end));
   TileRowBands bands;
   RowEdges<Wide> row_edges;

@@ -71,10 +71,7 @@ void set_up_box_rows(const AreaEdge* edges, const int* ramp_edges, int ramps, st
                      int r_begin, int r_end, BoxRows& rows) {
   using Doubles = xsimd::batch<double, Arch>;
   constexpr int kLanes = static_cast<int>(Doubles::size);
-  alignas(64) double offsets[kLanes];
-  for (int l = 0; l < kLanes; ++l)
-    offsets[l] = static_cast<double>(l);
-  const Doubles lane_rows = Doubles::load_aligned(offsets);
+  const Doubles lane_rows = lane_offsets<Arch>();
   const Doubles zero(0.0), reach(kBoxWalkReach);
   for (int i = 0; i < ramps; ++i) {
     const AreaEdge& edge = edges[ramp_edges[i]];
@@ -184,10 +181,7 @@ void walk_box(const AreaTriangle& tri, const PixelRect& box, Storage& storage,
   const std::int32_t columns = (box.x1 - 1) / kTileSize - first_tile_x + 1;
   AreaEdge edges[3];
   set_up_area_edges(tri, origin, edges);
-  alignas(64) double lane_offsets[kLanes];
-  for (int l = 0; l < kLanes; ++l)
-    lane_offsets[l] = static_cast<double>(l);
-  const Doubles lane_columns = Doubles::load_aligned(lane_offsets);
+  const Doubles lane_columns = lane_offsets<Wide>();
   const Doubles box_begin(static_cast<double>(x_begin)), box_end(static_cast<double>(x_end));
   BoxRowEdges<Wide> row_edges;
   const BoxEdgeKinds kinds = sort_box_edges<Wide>(edges, row_edges);

@@ -76,6 +76,16 @@ inline void set_up_area_edges(const AreaTriangle& tri, std::int32_t origin_x, Ar
   }
 }
 
+// 0, 1, 2, ... per lane: the lanes' column (or row) offsets from a group's first.
+template <class Arch>
+[[gnu::always_inline]] inline xsimd::batch<double, Arch> lane_offsets() {
+  using Doubles = xsimd::batch<double, Arch>;
+  alignas(64) double offsets[Doubles::size];
+  for (std::size_t l = 0; l < Doubles::size; ++l)
+    offsets[l] = static_cast<double>(l);
+  return Doubles::load_aligned(offsets);
+}
+
 // Tile (tile_x, tile_y) of `triangle`, with no area yet.
 template <class Arch>
 [[gnu::always_inline]] inline void clear_area_tile(AreaTile& tile, std::uint32_t triangle,
@@ -115,10 +125,7 @@ void set_up_bands(const AreaEdge* edges, std::int32_t top_row, int r_begin, int 
                   TileRowBands& bands) {
   using Doubles = xsimd::batch<double, Arch>;
   constexpr int kLanes = static_cast<int>(Doubles::size);
-  alignas(64) double offsets[kLanes];
-  for (int l = 0; l < kLanes; ++l)
-    offsets[l] = static_cast<double>(l);
-  const Doubles lane_rows = Doubles::load_aligned(offsets);
+  const Doubles lane_rows = lane_offsets<Arch>();
   const Doubles zero(0.0), one(1.0);
   for (int e = 0; e < 3; ++e) {
     const AreaEdge& edge = edges[e];
