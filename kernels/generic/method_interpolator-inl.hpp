@@ -5,7 +5,7 @@
 // visitor therefore serves every method, with one switch per row of lanes where the methods
 // spend a dozen float operations or more each, instead of a copy of the visitor (and of every
 // walk and depth-test variant inside it) per method: the drawing kernels compile in a third of
-// the time. The plane-equation fast paths of shade-inl.hpp, which interpolate colours by their
+// the time. The plane-equation paths of shade_colour-inl.hpp, which interpolate colours by their
 // own planes, do not call row() at all.
 #pragma once
 

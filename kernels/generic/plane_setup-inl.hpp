@@ -1,6 +1,6 @@
 // The planes of a group of triangles set up together, one triangle per double lane: the depth
 // plane (kernels/src/depth_plane.hpp) and the colour planes of Gouraud shading by plane
-// equations (shade-inl.hpp). Every lane computes exactly the double operations of the scalar
+// equations (shade_colour-inl.hpp). Every lane computes exactly the double operations of the scalar
 // set-up, in the same order (kernels are compiled without FMA contraction), and rounds to float
 // once, so the planes are bit for bit those of make_depth_plane() and of the scalar colour
 // planes; only the work is shared.

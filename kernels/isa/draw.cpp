@@ -3,7 +3,7 @@
 #include "../src/isa_build.hpp"
 
 #include "../generic/culled_triangles-inl.hpp"
-#include "../generic/shade-inl.hpp"
+#include "../generic/shade_multisample-inl.hpp"
 #include "../generic/triangle_batch-inl.hpp"
 #include "../generic/vertex_stage-inl.hpp"
 #include "../generic/vertex_transform-inl.hpp"

@@ -1,5 +1,5 @@
 // Triangles whose three vertices share one colour: the plane path uses that colour as it is
-// (shade-inl.hpp), so Gouraud writes exactly its 8-bit code on a single-sample target (on a
+// (shade_colour-inl.hpp), so Gouraud writes exactly its 8-bit code on a single-sample target (on a
 // multisampled one, the reference's colour within its bound), and diffuse light stays within
 // the derived bound of the reference; depth and counts equal the reference's as always.
 #include <gtest/gtest.h>
