@@ -150,14 +150,16 @@ Rgba combine_terms(const SummedAreaTable& table, const std::vector<PrefixTerm>& 
 
 void require_ripmaps(const Texture& texture) {
   if (texture.ripmap_levels().empty()) {
-    throw std::invalid_argument("ripmap filter: the texture was built without ripmaps");
+    throw std::invalid_argument(
+        "reference::sample: the ripmap filter needs a texture built with ripmaps");
   }
 }
 
 const SummedAreaTable& require_summed_area_table(const Texture& texture) {
   const SummedAreaTable* table = texture.summed_area_table();
   if (table == nullptr) {
-    throw std::invalid_argument("summed_area filter: the texture has no summed-area table");
+    throw std::invalid_argument(
+        "reference::sample: the summed_area filter needs a texture built with a summed-area table");
   }
   return *table;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "edgewise/coverage.hpp"
 
@@ -191,7 +192,9 @@ ClipStatus store_clamped(const ClipVertex* polygon, int count, const GuardBandPl
 GuardBandPlanes guard_band_planes(const Viewport& viewport) {
   if (viewport.width < 1 || viewport.width > kMaxTargetSize || viewport.height < 1 ||
       viewport.height > kMaxTargetSize) {
-    throw std::invalid_argument("edgewise: viewport size outside 1 .. kMaxTargetSize");
+    throw std::invalid_argument("guard_band_planes: viewport " + std::to_string(viewport.width) +
+                                "x" + std::to_string(viewport.height) + " is outside 1.." +
+                                std::to_string(kMaxTargetSize) + " pixels per side");
   }
   const double band = kGuardBand - static_cast<double>(kGuardBandMargin);
   const double x_span = 2.0 * band / viewport.width;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernel_table.hpp"
@@ -16,29 +17,36 @@
 namespace edgewise {
 namespace {
 
+// `caller`: the entry point, which each message names first.
 detail::TriangleBatch make_batch(std::span<const Vec2> vertices,
                                  std::span<const std::uint32_t> indices, const RasterTarget& target,
-                                 const RasterOptions& options) {
+                                 const RasterOptions& options, std::string_view caller) {
+  const std::string who = std::string(caller) + ": ";
   const std::size_t corners = indices.empty() ? vertices.size() : indices.size();
   if (corners % 3 != 0) {
-    throw std::invalid_argument(std::string(indices.empty() ? "vertex" : "index") + " count " +
+    throw std::invalid_argument(who + (indices.empty() ? "vertex" : "index") + " count " +
                                 std::to_string(corners) + " is not a multiple of 3");
   }
   const std::size_t triangles = corners / 3;
   if (!options.statuses.empty() && options.statuses.size() != triangles) {
-    throw std::invalid_argument("statuses has " + std::to_string(options.statuses.size()) +
+    throw std::invalid_argument(who + "statuses has " + std::to_string(options.statuses.size()) +
                                 " entries for " + std::to_string(triangles) + " triangles");
   }
   if (static_cast<int>(options.cull) > static_cast<int>(CullMode::counter_clockwise)) {
-    throw std::invalid_argument("unknown cull mode");
+    throw std::invalid_argument(who + "cull mode " +
+                                std::to_string(static_cast<int>(options.cull)) +
+                                " is none of CullMode's values");
   }
-  // standard_sample_pattern() throws for a count without a pattern.
+  if (!is_standard_sample_count(options.samples)) {
+    throw std::invalid_argument(who + std::to_string(options.samples) +
+                                " samples per pixel has no standard pattern (1, 2, 4, 8 or 16)");
+  }
   const std::span<const SampleOffset> pattern = standard_sample_pattern(options.samples);
   return {vertices.data(),
           vertices.size(),
           indices.empty() ? nullptr : indices.data(),
           triangles,
-          clip_rect(target),
+          detail::checked_clip_rect(target, caller),
           options.cull,
           options.statuses.empty() ? nullptr : options.statuses.data(),
           options.samples > 1 ? pattern : std::span<const SampleOffset>{}};
@@ -106,17 +114,22 @@ std::string_view describe(TriangleStatus status) {
 }
 
 PixelRect clip_rect(const RasterTarget& target) {
+  return detail::checked_clip_rect(target, "clip_rect");
+}
+
+PixelRect detail::checked_clip_rect(const RasterTarget& target, std::string_view caller) {
   if (target.width < 0 || target.width > kMaxTargetSize || target.height < 0 ||
       target.height > kMaxTargetSize) {
-    throw std::invalid_argument("target " + std::to_string(target.width) + "x" +
-                                std::to_string(target.height) + " is outside 0.." +
+    throw std::invalid_argument(std::string(caller) + ": target " + std::to_string(target.width) +
+                                "x" + std::to_string(target.height) + " is outside 0.." +
                                 std::to_string(kMaxTargetSize) + " pixels per side");
   }
   PixelRect clip{0, 0, target.width, target.height};
   if (target.scissor) {
     const PixelRect& s = *target.scissor;
     if (s.x0 > s.x1 || s.y0 > s.y1) {
-      throw std::invalid_argument("scissor is inverted (x0 > x1 or y0 > y1)");
+      throw std::invalid_argument(std::string(caller) +
+                                  ": the scissor is inverted (x0 > x1 or y0 > y1)");
     }
     clip.x0 = std::max(clip.x0, s.x0);
     clip.y0 = std::max(clip.y0, s.y0);
@@ -130,7 +143,7 @@ PixelRect clip_rect(const RasterTarget& target) {
 RasterReport rasterize(std::span<const Vec2> vertices, std::span<const std::uint32_t> indices,
                        const RasterTarget& target, const RasterOptions& options,
                        CoverageSink& sink) {
-  const detail::TriangleBatch batch = make_batch(vertices, indices, target, options);
+  const detail::TriangleBatch batch = make_batch(vertices, indices, target, options, "rasterize");
   const detail::KernelTable& kernels = chosen_kernels(options);
   RasterReport report;
   report.isa = kernels.isa;
@@ -143,7 +156,8 @@ RasterReport rasterize_areas(std::span<const Vec2> vertices, std::span<const std
                              AreaSink& sink) {
   RasterOptions centres = options;
   centres.samples = 1;  // areas have no samples
-  const detail::TriangleBatch batch = make_batch(vertices, indices, target, centres);
+  const detail::TriangleBatch batch =
+      make_batch(vertices, indices, target, centres, "rasterize_areas");
   const detail::KernelTable& kernels = chosen_kernels(options);
   RasterReport report;
   report.isa = kernels.isa;
@@ -153,7 +167,8 @@ RasterReport rasterize_areas(std::span<const Vec2> vertices, std::span<const std
 
 CoverageCount count_coverage(std::span<const Vec2> vertices, std::span<const std::uint32_t> indices,
                              const RasterTarget& target, const RasterOptions& options) {
-  const detail::TriangleBatch batch = make_batch(vertices, indices, target, options);
+  const detail::TriangleBatch batch =
+      make_batch(vertices, indices, target, options, "count_coverage");
   const detail::KernelTable& kernels = chosen_kernels(options);
   const detail::Workers workers =
       detail::resolve_workers(options.threads, options.executor, "count_coverage");

@@ -76,7 +76,8 @@ DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const Dra
   DrawCall call;
   call.report.isa = resolve_isa(options.isa);
   call.kernels = &kernel_table(call.report.isa);
-  call.clip = clip_rect(RasterTarget{target.width(), target.height(), options.scissor});
+  call.clip = detail::checked_clip_rect(
+      RasterTarget{target.width(), target.height(), options.scissor}, "draw");
   call.workers = resolve_workers(options.threads, options.executor, "draw");
   call.samples = target.samples();
   const std::size_t corners = mesh.indices.empty() ? mesh.positions.size() : mesh.indices.size();

@@ -28,12 +28,12 @@ std::uint32_t pack_rgba8(const Vec4& color) {
 Framebuffer::Framebuffer(std::int32_t width, std::int32_t height, int samples)
     : width_(width), height_(height), samples_(samples) {
   if (width < 0 || width > kMaxTargetSize || height < 0 || height > kMaxTargetSize) {
-    throw std::invalid_argument("framebuffer " + std::to_string(width) + "x" +
+    throw std::invalid_argument("Framebuffer: size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " is outside 0.." +
                                 std::to_string(kMaxTargetSize) + " pixels per side");
   }
   if (!is_standard_sample_count(samples)) {
-    throw std::invalid_argument("framebuffer: " + std::to_string(samples) +
+    throw std::invalid_argument("Framebuffer: " + std::to_string(samples) +
                                 " samples per pixel has no standard pattern (1, 2, 4, 8 or 16)");
   }
   tiles_x_ = (width + 7) / 8;

@@ -35,9 +35,8 @@ std::span<const SampleOffset> standard_sample_pattern(int samples) {
     case 16:
       return kSixteen;
     default:
-      throw std::invalid_argument("edgewise: no standard sample pattern for " +
-                                  std::to_string(samples) +
-                                  " samples per pixel (1, 2, 4, 8 or 16)");
+      throw std::invalid_argument("standard_sample_pattern: " + std::to_string(samples) +
+                                  " samples per pixel has no standard pattern (1, 2, 4, 8 or 16)");
   }
 }
 

@@ -44,8 +44,8 @@ std::size_t threads_from_environment() {
     count = count * 10 + static_cast<std::size_t>(c - '0');
   }
   if (count < 1 || count > kMaxThreads) {
-    throw std::invalid_argument("EDGEWISE_THREADS is '" + std::string(text) +
-                                "', not a thread count from 1 to " + std::to_string(kMaxThreads));
+    throw std::invalid_argument("EDGEWISE_THREADS=" + std::string(text) +
+                                ": not a thread count from 1 to " + std::to_string(kMaxThreads));
   }
   return count;
 }

@@ -6,11 +6,15 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string_view>
 
 #include "edgewise/coverage.hpp"
 #include "edgewise/multisample.hpp"
 
 namespace edgewise::detail {
+
+// clip_rect() for the entry point `caller`, which its messages name.
+PixelRect checked_clip_rect(const RasterTarget& target, std::string_view caller);
 
 // Where a draw's samples can be: the pixels of `clip`, each with samples up to `reach`
 // fixed-point units (1/256 px) from its centre on either axis (0 for one sample per pixel).
