@@ -18,7 +18,7 @@
 #include "../src/shade_batch.hpp"
 #include "../simd/simd_ops-inl.hpp"
 #include "interpolation-inl.hpp"
-#include "sample_walk-inl.hpp"
+#include "multisample_walk-inl.hpp"
 #include "tile_masks-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
@@ -218,7 +218,7 @@ class DepthStage {
 
   const detail::ShadeBatch& batch_;
   const bool keep_bounds_, reject_hidden_;
-  // The target's sample pattern's reach (sample_walk-inl.hpp): hidden() looks at every sample.
+  // The target's sample pattern's reach (multisample_walk-inl.hpp): hidden() looks at every sample.
   const SampleReach sample_reach_;
   detail::DepthPlane plane_{};
   float max_vertex_depth_ = 0.0f;

@@ -1,6 +1,6 @@
 // The multisample part of shading: the walks deliver every sample's masks of a tile
-// (walk_sample_tiles), and sample k of the tile is the 64 values from (tile * samples + k) * 64
-// (framebuffer.hpp). Each covered sample's depth is tested, and written, at its own position;
+// (walk_multisample_tiles), and sample k of the tile is the 64 values from (tile * samples + k) *
+// 64 (framebuffer.hpp). Each covered sample's depth is tested, and written, at its own position;
 // each pixel with a covered sample is shaded once, at its centre, and that colour written to the
 // samples that passed.
 #pragma once
@@ -45,8 +45,8 @@ class MultisampleShadingVisitor : public ShadingVisitor<Arch> {
     sample_rows_tile_y_ = kNoTileRow;
   }
 
-  void sample_tile(std::uint32_t tile_x, std::uint32_t tile_y,
-                   std::span<const std::uint64_t> masks) {
+  void multisample_tile(std::uint32_t tile_x, std::uint32_t tile_y,
+                        std::span<const std::uint64_t> masks) {
     const std::size_t samples = masks.size();
     const std::size_t tile_index =
         static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(this->batch_.tiles_x) + tile_x;

@@ -9,7 +9,7 @@
 
 #include "../src/kernel_table.hpp"
 #include "../simd/lane_arch-inl.hpp"
-#include "sample_walk-inl.hpp"
+#include "multisample_walk-inl.hpp"
 #include "span_walk-inl.hpp"
 #include "tile_walk-inl.hpp"
 
@@ -68,7 +68,8 @@ inline void walk_triangle(const TriangleSetup& setup, Visitor& visitor) {
   }
 }
 
-// A visitor of every sample of the batch's pattern (sample_tile), rather than of pixel centres.
+// A visitor of every sample of the batch's pattern (multisample_tile), rather than of pixel
+// centres.
 template <class Visitor>
 concept MultisampleVisitor = requires {
   Visitor::kMultisample;
@@ -89,9 +90,9 @@ inline void walk_visible(const detail::TriangleBatch& batch, const TriangleSetup
     visitor.walk(setup);
   } else if constexpr (MultisampleVisitor<Visitor>) {
     if (setup.narrow) {
-      walk_sample_tiles<Arch, std::int32_t>(setup, batch.samples, visitor);
+      walk_multisample_tiles<Arch, std::int32_t>(setup, batch.samples, visitor);
     } else {
-      walk_sample_tiles<Arch, std::int64_t>(setup, batch.samples, visitor);
+      walk_multisample_tiles<Arch, std::int64_t>(setup, batch.samples, visitor);
     }
   } else {
     walk_triangle(setup, visitor);

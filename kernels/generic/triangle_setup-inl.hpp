@@ -45,7 +45,7 @@ struct EdgeSetup {
   std::int64_t g;     // G at the sample of pixel (origin_x, origin_y)
   // (E + bias) - 256 G, in [0, 255]: the same at every pixel centre (E steps by multiples of
   // 256), so a sample moved from the centre by (sx, sy) fixed-point units has
-  // G + floor((remainder + A sx + B sy) / 256) (sample_walk-inl.hpp).
+  // G + floor((remainder + A sx + B sy) / 256) (multisample_walk-inl.hpp).
   std::int32_t remainder;
 };
 

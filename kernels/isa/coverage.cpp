@@ -29,11 +29,11 @@ struct CountingVisitor {
 };
 
 // Counts the covered samples of every sample of the pattern.
-struct SampleCountingVisitor {
+struct MultisampleCountingVisitor {
   static constexpr bool kMultisample = true;
   std::uint64_t samples = 0;
   void begin_triangle(std::uint32_t) {}
-  void sample_tile(std::uint32_t, std::uint32_t, std::span<const std::uint64_t> masks) {
+  void multisample_tile(std::uint32_t, std::uint32_t, std::span<const std::uint64_t> masks) {
     for (std::uint64_t mask : masks)
       samples += static_cast<std::uint64_t>(std::popcount(mask));
   }
@@ -69,11 +69,11 @@ class BufferingVisitor {
 };
 
 // BufferingVisitor for every sample of the pattern: a tile's samples in pattern order.
-struct SampleBufferingVisitor : BufferingVisitor {
+struct MultisampleBufferingVisitor : BufferingVisitor {
   static constexpr bool kMultisample = true;
   using BufferingVisitor::BufferingVisitor;
-  void sample_tile(std::uint32_t tile_x, std::uint32_t tile_y,
-                   std::span<const std::uint64_t> masks) {
+  void multisample_tile(std::uint32_t tile_x, std::uint32_t tile_y,
+                        std::span<const std::uint64_t> masks) {
     for (std::size_t k = 0; k < masks.size(); ++k) {
       if (masks[k] != 0) tile(tile_x, tile_y, masks[k], static_cast<std::uint8_t>(k));
     }
@@ -145,7 +145,7 @@ void rasterize_areas(const detail::TriangleBatch& batch, AreaSink& sink, RasterR
 
 void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report) {
   if (batch.samples.size() > 1) {
-    SampleBufferingVisitor visitor(sink);
+    MultisampleBufferingVisitor visitor(sink);
     run_batch(batch, visitor, report);
     visitor.flush();
     return;
@@ -158,7 +158,7 @@ void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterRep
 void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
                     std::uint64_t& pixels) {
   if (batch.samples.size() > 1) {
-    SampleCountingVisitor visitor;
+    MultisampleCountingVisitor visitor;
     run_batch(batch, visitor, report);
     pixels += visitor.samples;
     return;

@@ -109,7 +109,7 @@ void for_each_tile(const SnappedTriangle& t, const PixelRect& clip,
   }
 }
 
-void for_each_sample_tile(
+void for_each_multisample_tile(
     const SnappedTriangle& t, const PixelRect& clip, std::span<const SampleOffset> pattern,
     const std::function<void(std::uint32_t, std::uint32_t, std::uint8_t, std::uint64_t)>& tile) {
   // Samples lie inside their pixel's square, so the centres' generous box holds them too.

@@ -48,7 +48,7 @@ void for_each_tile(const SnappedTriangle& tri, const PixelRect& clip,
 
 // The same for every sample of `pattern`: tile(tile_x, tile_y, sample, mask) for each tile and
 // sample with a covered sample, tiles row by row, samples in pattern order within a tile.
-void for_each_sample_tile(
+void for_each_multisample_tile(
     const SnappedTriangle& tri, const PixelRect& clip, std::span<const SampleOffset> pattern,
     const std::function<void(std::uint32_t, std::uint32_t, std::uint8_t, std::uint64_t)>& tile);
 

@@ -27,7 +27,7 @@ void run_batch(const detail::TriangleBatch& batch, RasterReport& report, TileFn&
       batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
         const auto triangle = static_cast<std::uint32_t>(t);
         if (batch.samples.size() > 1) {
-          reference::for_each_sample_tile(
+          reference::for_each_multisample_tile(
               snapped, batch.clip, batch.samples,
               [&](std::uint32_t tx, std::uint32_t ty, std::uint8_t sample, std::uint64_t mask) {
                 tile(triangle, tx, ty, mask, sample);

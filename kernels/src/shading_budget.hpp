@@ -27,8 +27,8 @@
 // the model error.
 //
 // The exact path's rounding: the float32 plane evaluation of draw()'s plane-equation path
-// (shade_planar_rows-inl.hpp), each plane within 7 u M of its exact value (u = 2^-24, M the sum of the
-// magnitudes of its terms at the farthest vertex), carried through the perspective division and
+// (shade_planar_rows-inl.hpp), each plane within 7 u M of its exact value (u = 2^-24, M the sum of
+// the magnitudes of its terms at the farthest vertex), carried through the perspective division and
 // the light as the draw tests' bounds carry them (tests/draw/colour_bounds.cpp), and a filtered
 // texel within 16 u of its texels' range. Triangles outside these bounds (slivers whose planes
 // lose their digits, w outside the interpolators' range, huge or non-finite values) keep the

@@ -46,15 +46,15 @@ inline SampleReach sample_reach(std::span<const SampleOffset> pattern) {
 // Per edge: each sample's offset of G from the pixel centre's (delta), G's steps per tile, and
 // the offsets from a tile's G to its extreme samples, for rejecting and accepting whole tiles.
 template <class Int>
-struct SampleEdgeSteps {
+struct MultisampleEdgeSteps {
   Int delta[3][kMaxSamples];
   Int step_x[3], step_y[3], reject_offset[3], accept_offset[3];
 };
 
 template <class Int>
-[[gnu::always_inline]] inline SampleEdgeSteps<Int> sample_edge_steps(
+[[gnu::always_inline]] inline MultisampleEdgeSteps<Int> multisample_edge_steps(
     const TriangleSetup& setup, std::span<const SampleOffset> pattern) {
-  SampleEdgeSteps<Int> steps;
+  MultisampleEdgeSteps<Int> steps;
   for (int e = 0; e < 3; ++e) {
     const EdgeSetup& edge = setup.edge[e];
     Int most = 0, least = 0;
@@ -78,16 +78,17 @@ template <class Int>
   return steps;
 }
 
-// Calls visitor.sample_tile(tile_x, tile_y, masks) for every tile with a covered sample, in row
-// order; masks[k] holds sample k's coverage (bit y * 8 + x), masks.size() the pattern's count.
+// Calls visitor.multisample_tile(tile_x, tile_y, masks) for every tile with a covered sample, in
+// row order; masks[k] holds sample k's coverage (bit y * 8 + x), masks.size() the pattern's count.
 // Int is the type G steps in: int32 when setup.narrow (set up with the pattern's reach), else
 // int64 with each tile's values clamped as walk_tiles() clamps them.
 template <class Arch, class Int, class Visitor>
-[[gnu::noinline]] void walk_sample_tiles(const TriangleSetup& setup,
-                                         std::span<const SampleOffset> pattern, Visitor& visitor) {
+[[gnu::noinline]] void walk_multisample_tiles(const TriangleSetup& setup,
+                                              std::span<const SampleOffset> pattern,
+                                              Visitor& visitor) {
   const std::size_t samples = pattern.size();
   const TileEvaluator<WideArch<Arch>> evaluator(setup);
-  const SampleEdgeSteps<Int> steps = sample_edge_steps<Int>(setup, pattern);
+  const MultisampleEdgeSteps<Int> steps = multisample_edge_steps<Int>(setup, pattern);
   const auto& delta = steps.delta;
   const auto& step_x = steps.step_x;
   const auto& step_y = steps.step_y;
@@ -137,8 +138,9 @@ template <class Arch, class Int, class Visitor>
           }
         }
         if (any != 0) {
-          visitor.sample_tile(first_tile_x + column, static_cast<std::uint32_t>(ty / kTileSize),
-                              std::span<const std::uint64_t>(masks, samples));
+          visitor.multisample_tile(first_tile_x + column,
+                                   static_cast<std::uint32_t>(ty / kTileSize),
+                                   std::span<const std::uint64_t>(masks, samples));
         }
       }
       for (int e = 0; e < 3; ++e)
