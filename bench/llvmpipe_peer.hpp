@@ -35,7 +35,7 @@
 #include <memory>
 #include <string>
 
-#include "draw_peer_workloads.hpp"
+#include "draw/draw_peer_workloads.hpp"
 
 namespace edgewise::bench {
 

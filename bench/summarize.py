@@ -47,14 +47,14 @@ TARGET_AVX2_OVER_REFERENCE_AT_1000 = 8.0
 # per-triangle work, large ones by per-fragment work.
 SHADING_TARGET = {8: ("triangles", 15e6), 64: ("triangles", 8e6), 1000: ("fragments", 1.2e9),
                   200000: ("fragments", 4e9)}
-# The reference draws the first 1/REFERENCE_SHARE of each shading set (bench/draw_bench.cpp).
+# The reference draws the first 1/REFERENCE_SHARE of each shading set (bench/draw/draw_bench.cpp).
 REFERENCE_SHARE = 16
 # The production interpolation setting, which the method table is relative to.
 BASELINE_METHOD = ("plane_equations", "correct")
 
 # Sampling targets (AVX2, one core, ground-plane stream), samples/s; anisotropic or EWA at 16x.
 SAMPLE_TARGET = {"bilinear": 150e6, "trilinear": 100e6, "anisotropic": 15e6, "ewa": 15e6}
-# The reference samples the first 1/SAMPLE_REFERENCE_SHARE of each stream (bench/sample_bench.cpp).
+# The reference samples the first 1/SAMPLE_REFERENCE_SHARE of each stream (bench/texture/sample_bench.cpp).
 SAMPLE_REFERENCE_SHARE = 64
 SAMPLE_FILTERS = ["nearest", "bilinear", "bicubic_catmull_rom", "bicubic_bspline", "mip_nearest",
                   "trilinear", "supersample", "ripmap", "summed_area", "anisotropic", "ewa"]
@@ -75,7 +75,7 @@ DRAW_NAME = re.compile(
     r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/(?P<derivatives>[a-z]+)$")
 TEXTURED_ALL_NAME = re.compile(r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/threads:all/(?P<filter>[a-z_]+)/"
                                r"quad/real_time$")
-# The other precision of a filter's bilinear taps, run beside the default (bench/bench_texture.hpp).
+# The other precision of a filter's bilinear taps, run beside the default (bench/texture/bench_texture.hpp).
 SAMPLE_PRECISION_NAME = re.compile(r"^Sample/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/"
                                    r"(?P<stream>[a-z_]+)/(?P<precision>float32|fixed16)$")
 DRAW_PRECISION_NAME = re.compile(r"^TexturedDraw/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z_]+)/"
@@ -85,13 +85,13 @@ DRAW_PEER_NAME = re.compile(r"^DrawPeer/(?P<peer>[a-z0-9_]+)/threads:(?P<threads
                             r"(?P<workload>.+?)(/manual_time)?$")
 MULTISAMPLE_NAME = re.compile(r"^Multisample/(?P<isa>[a-z0-9_]+)/samples:(?P<samples>\d+)/"
                               r"area:(?P<area>\d+)$")
-# The drawing peer's multisampled workloads: area:<px>/samples:<n> (bench/draw_peer_workloads.hpp).
+# The drawing peer's multisampled workloads: area:<px>/samples:<n> (bench/draw/draw_peer_workloads.hpp).
 PEER_MULTISAMPLE_WORKLOAD = re.compile(r"^area:(?P<area>\d+)/samples:(?P<samples>\d+)$")
 RESOLVE_NAME = re.compile(r"^Resolve/(?P<isa>[a-z0-9_]+)/(?P<filter>[a-z]+)/(?P<encoding>linear|srgb)/"
                           r"threads:(?P<threads>1|all)/msaa4/1280x720(/real_time)?$")
 MESH_DRAW_NAME = re.compile(r"^MeshDraw/(?P<isa>[a-z0-9_]+)/(?P<threads>threads:all/)?"
                             r"(?P<mesh>[^/]+?)(/real_time)?$")
-# The drawing peer's workloads: the edgewise benchmark each repeats (bench/draw_peer_workloads.hpp)
+# The drawing peer's workloads: the edgewise benchmark each repeats (bench/draw/draw_peer_workloads.hpp)
 # and the rate compared, as the shading targets count it.
 DRAW_PEER_WORKLOADS = {
     "area:8": ("Shading", 8, "triangles", "tri/s"),
@@ -436,7 +436,7 @@ def print_sampling(samples, peers):
         print()
     print(f"the reference samples the first 1/{SAMPLE_REFERENCE_SHARE} of each stream; "
           "OpenImageIO's modes: closest, bilinear, bicubic (a B-spline), trilinear, "
-          "anisotropic 16 (as bench/sample_bench.cpp sets them)")
+          "anisotropic 16 (as bench/texture/sample_bench.cpp sets them)")
 
 
 def print_textured_draw(draws, samples):
@@ -612,7 +612,7 @@ def print_multisample(multisample, draw_peers):
           "diff' per draw (depth rounding at near-ties)")
 
 
-# The mesh benchmarks' built-in scene (bench/mesh_scenes.cpp), beside the OBJ meshes, and the
+# The mesh benchmarks' built-in scene (bench/draw/mesh_scenes.cpp), beside the OBJ meshes, and the
 # prefix of their grids of copies of a mesh (EDGEWISE_BENCH_GRIDS).
 BUILT_IN_SCENE = "default_scene"
 GRID_SCENE = re.compile(r"^grid\d+-")

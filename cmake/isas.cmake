@@ -1,5 +1,5 @@
 # The instruction sets edgewise compiles its kernels for, and how. This list and
-# kernels/src/isa_list.hpp are the only places that name them; tests/isa_dispatch_test.cpp fails
+# kernels/core/isa_list.hpp are the only places that name them; tests/core/isa_dispatch_test.cpp fails
 # if the two disagree. Adding an ISA: its entry here (name and compiler flags), its entry in
 # isa_list.hpp (xsimd architecture and CPU check) and its value in the Isa enum
 # (kernels/include/edgewise/isa.hpp).
@@ -50,7 +50,7 @@ if(EDGEWISE_ONLY_ISAS)
       list(APPEND _kept_isas ${isa})
     else()
       list(APPEND EDGEWISE_ISAS_OF_OTHER_PROCESSORS ${isa})
-      # kernels/src/isa_list.hpp drops the ISA from the code's list.
+      # kernels/core/isa_list.hpp drops the ISA from the code's list.
       add_compile_definitions(EDGEWISE_LEAVE_OUT_${isa})
     endif()
   endforeach()
@@ -63,7 +63,7 @@ set(EDGEWISE_KERNEL_FLAGS -ffp-contract=off)
 
 # edgewise_add_isa_objects(PREFIX SOURCES file... [INCLUDES dir...] [FLAGS flag...])
 # Compiles the same sources once per ISA of EDGEWISE_ISAS, each into an OBJECT library
-# PREFIX_<isa> with that ISA's flags and EDGEWISE_BUILD_ISA=<isa> (kernels/src/isa_build.hpp
+# PREFIX_<isa> with that ISA's flags and EDGEWISE_BUILD_ISA=<isa> (kernels/core/isa_build.hpp
 # turns it into the ISA's namespace and xsimd architecture). Sets PREFIX_OBJECT_LIBRARIES in the
 # caller's scope to the libraries made.
 function(edgewise_add_isa_objects prefix)

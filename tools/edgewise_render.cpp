@@ -38,7 +38,7 @@
 #include "render/image_writer.hpp"
 #include "render/render_texture.hpp"
 #include "scene/obj_loader.hpp"
-#include "src/draw_stages.hpp"
+#include "draw/draw_stages.hpp"
 
 namespace {
 
@@ -232,7 +232,7 @@ FrameTimes render_frames(Framebuffer& framebuffer, const DrawMesh& mesh, const D
     const auto start = Clock::now();
     framebuffer.clear(kBackground, clear_depth(options.depth_test));
     clear[r] = seconds_since(start);
-    // draw(), stage by stage (kernels/src/draw_stages.hpp: the calls draw() makes), so that the
+    // draw(), stage by stage (kernels/draw/draw_stages.hpp: the calls draw() makes), so that the
     // vertex stage and the shading are timed apart.
     const auto draw_start = Clock::now();
     detail::DrawCall call = detail::prepare_draw(framebuffer, mesh, options);

@@ -1,5 +1,5 @@
 // Multiply-adds of 8-bit channel pairs by 16-bit weight pairs into 32-bit sums (pmaddwd on x86,
-// vmlal on NEON), for fixed-point filtering (kernels/generic/fixed_taps-inl.hpp).
+// vmlal on NEON), for fixed-point filtering (kernels/texture/fixed_taps-inl.hpp).
 #pragma once
 
 #include <cstddef>

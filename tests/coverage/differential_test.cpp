@@ -119,7 +119,7 @@ void run_differential(Isa isa, std::string_view source_name, int samples = 1,
       static_cast<std::uint64_t>(static_cast<double>(budget) * source.share * fraction);
   const std::string replay = "EDGEWISE_FUZZ_SEED=" + std::to_string(seed) +
                              " EDGEWISE_FUZZ_ITERS=" + std::to_string(budget) +
-                             " edgewise_tests --gtest_filter=Differential." +
+                             " edgewise_coverage_tests --gtest_filter=Differential." +
                              ::testing::UnitTest::GetInstance()->current_test_info()->name();
   // Each generator has its own stream, independent of the others' shares.
   Random random(seed ^ name_hash(source.name) ^ static_cast<std::uint64_t>(samples - 1));

@@ -90,9 +90,9 @@ void expect_same(const Counted& one, const Counted& many, const std::string& wha
 
 using CoverageThreads = IsaTest;
 
-// Enough triangles for several binning ranges (over 2048 each, kernels/src/triangle_binning.hpp);
-// smaller ones for the reference, which evaluates every pixel of a triangle's box (the tsan
-// stage of tools/check runs these tests about 20 times slower).
+// Enough triangles for several binning ranges (over 2048 each,
+// kernels/coverage/triangle_binning.hpp); smaller ones for the reference, which evaluates every
+// pixel of a triangle's box (the tsan stage of tools/check runs these tests about 20 times slower).
 Triangles triangles_for(Isa isa, std::uint64_t seed) {
   return isa == Isa::reference ? random_triangles(seed, 6000, 150.0)
                                : random_triangles(seed, 12000, 400.0);

@@ -8,7 +8,7 @@
 # A file reference is a `backticked` path in README.md, docs/*.md or bench/**/README.md that
 # ends in a source, script or document extension. It resolves as a path from the repository
 # root or the document's folder, as an include path (`edgewise/draw.hpp`), or as the tail of a
-# source file's path: of exactly one when it names a folder (`isa/draw.cpp`), of at least one
+# source file's path: of exactly one when it names a folder (`draw/draw_kernels.cpp`), of at least one
 # when it is a bare name (`summary.txt`, one per results folder). A citation is
 # `docs/design/CHAPTER.md`, or `docs/design/CHAPTER.md, "Heading"`, in any source file of
 # kernels/, tests/, bench/, tools/ or testing/.

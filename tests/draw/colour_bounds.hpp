@@ -3,7 +3,7 @@
 // shading models of draw() (draw.hpp), then to 8-bit codes.
 #pragma once
 
-#include "src/screen_triangle.hpp"
+#include "interpolation/screen_triangle.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/vector.hpp"
 #include "interpolation/error_bounds.hpp"

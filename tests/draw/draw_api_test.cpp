@@ -10,7 +10,7 @@
 
 #include "edgewise/draw.hpp"
 #include "isa_params.hpp"
-#include "src/framebuffer_access.hpp"
+#include "core/framebuffer_access.hpp"
 
 namespace edgewise::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "src/screen_triangle.hpp"
+#include "interpolation/screen_triangle.hpp"
 #include "edgewise/draw.hpp"
 #include "random.hpp"
 #include "draw/colour_bounds.hpp"

@@ -14,8 +14,8 @@
 
 #include "edgewise/draw.hpp"
 #include "isa_params.hpp"
-#include "reference/clip_reference.hpp"
-#include "src/clip.hpp"
+#include "draw/vertex_stage/clip_reference.hpp"
+#include "draw/vertex_stage/clip.hpp"
 
 namespace edgewise::test {
 namespace {

@@ -1,9 +1,9 @@
 // Stability of the fast paths' documented safe ranges (docs/method-atlas.md, "Safe ranges"):
 // each test pins a regime the method atlas charts, and fails if the code moves it.
 // - Affine weights: never further from the perspective-correct colour than the derived bound
-//   (src/affine_error_bound.hpp) plus the 8-bit rounding, at every depth range; and the bound is
-//   reached, so the safe depth range it gives for a tolerance is not pessimistic by more than
-//   a little.
+//   (interpolation/affine_error_bound.hpp) plus the 8-bit rounding, at every depth range; and the
+//   bound is reached, so the safe depth range it gives for a tolerance is not pessimistic by more
+//   than a little.
 // - Depth: the separation of two surfaces that float32 z/w and reversed z/w resolve at half the
 //   far distance, for far / near = 1000.
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@
 #include "edgewise/edgewise.hpp"
 #include "draw_probes.hpp"
 #include "random.hpp"
-#include "src/affine_error_bound.hpp"
+#include "interpolation/affine_error_bound.hpp"
 
 namespace edgewise {
 namespace {

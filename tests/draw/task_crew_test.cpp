@@ -1,4 +1,4 @@
-// The crew that runs a draw's phases (kernels/src/task_crew.hpp): every task of a phase runs
+// The crew that runs a draw's phases (kernels/core/task_crew.hpp): every task of a phase runs
 // exactly once, phase after phase, whether the helpers are awake, asleep or never start; the
 // first exception a task throws comes back to the caller once every task has finished; a second
 // caller is refused rather than mixed in; helpers are started only when missing. Run under
@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "src/task_crew.hpp"
+#include "core/task_crew.hpp"
 
 namespace edgewise::test::task_crew {
 namespace {

@@ -1,9 +1,9 @@
 // How far a textured draw()'s pixel may be from the scalar reference's: the sampler's bound
-// (tests/sample/sample_bounds.hpp) carried through the product with the shaded colour, whose
+// (tests/texture/sample_bounds.hpp) carried through the product with the shaded colour, whose
 // own bound is tests/draw/colour_bounds.hpp's. Shared by the textured draw() tests and the
 // draw() fuzz target.
 //
-// Both sides sample the texture at the same queries (kernels/src/texture_planes.hpp is one
+// Both sides sample the texture at the same queries (kernels/draw/shading/texture_planes.hpp is one
 // float32 formula), so a check recomputes each pixel's query with that formula. With C the shaded
 // colour channel before the texture and T the filtered texel channel (both unclamped), a fast
 // channel is F = clamp(round(fl(255 C_f T_f))) (the product rounded once in float, clamped to
@@ -32,15 +32,15 @@
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "draw/colour_bounds.hpp"
-#include "sample/sample_bounds.hpp"
+#include "texture/sample_bounds.hpp"
 
 namespace edgewise::test {
 
 // Where the reference's shaded channel C_r of a covered pixel lies, from the vertex colours
 // alone: every interpolation method's reference weights at a point of the triangle are convex
-// (nonnegative, summing to 1: kernels/reference/interpolation_reference.hpp, and one-hot for flat
-// shading and nearest vertex), so C_r lies in the hull of the three vertex values; diffuse shading
-// multiplies red, green and blue by a light between the ambient term and 1 (up to the float
+// (nonnegative, summing to 1: kernels/interpolation/interpolation_reference.hpp, and one-hot for
+// flat shading and nearest vertex), so C_r lies in the hull of the three vertex values; diffuse
+// shading multiplies red, green and blue by a light between the ambient term and 1 (up to the float
 // rounding of the unit light direction). Widened by 2^-40 of the larger end for the double
 // roundings of the weights and products (a few units of 2^-53 each).
 struct ShadedRange {

@@ -1,9 +1,10 @@
 // Textured draw(): every ISA against the scalar reference, for every filter, both derivative
 // methods and both perspective modes. Depth must be identical; colours must lie within the bound
 // of tests/draw/textured_bounds.hpp (derived there), built from the sampler's bound
-// (tests/sample/sample_bounds.hpp) and the shading colour bound (tests/draw/colour_bounds.hpp),
-// with each pixel's query recomputed by the kernels' formula (kernels/src/texture_planes.hpp) and
-// its untextured colour taken from the reference render of the same triangle without texture.
+// (tests/texture/sample_bounds.hpp) and the shading colour bound (tests/draw/colour_bounds.hpp),
+// with each pixel's query recomputed by the kernels' formula
+// (kernels/draw/shading/texture_planes.hpp) and its untextured colour taken from the reference
+// render of the same triangle without texture.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,7 +22,7 @@
 #include "draw/colour_bounds.hpp"
 #include "draw/draw_scenes.hpp"
 #include "draw/textured_bounds.hpp"
-#include "src/texture_planes.hpp"
+#include "draw/shading/texture_planes.hpp"
 
 namespace edgewise::test::textured_draw {
 namespace {

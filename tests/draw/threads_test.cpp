@@ -44,8 +44,8 @@ Vec3 jitter(Random& random, const Vec3& centre, double size) {
 // Random triangles in front of a perspective camera, of sizes from a pixel to the whole view,
 // many partly outside it; some cross the near plane, some reach far past the guard band (both
 // clipped), some have zero area, and some repeat an earlier triangle (equal depths) in another
-// colour. More than kMinTrianglesPerRange (kernels/src/triangle_binning.hpp) twice over, so that
-// several threads bin several ranges. Centres lie within `spread` times the half-view on each
+// colour. More than kMinTrianglesPerRange (kernels/coverage/triangle_binning.hpp) twice over, so
+// that several threads bin several ranges. Centres lie within `spread` times the half-view on each
 // axis, sizes up to `largest` times the half-height.
 ThreadScene thread_scene(std::uint64_t seed, int triangles, double spread = 1.2,
                          double largest = 0.5) {
@@ -323,7 +323,7 @@ TEST_P(DrawThreads, MultisampledDrawsTheSameImage) {
 
 // A crowded view: nearly every triangle within a bin or a few (a mesh in the middle of the
 // screen), so that the bins that hold them are binned again into sub-bins for balance
-// (kernels/src/binned_draw.cpp, plan_shading()): a phase more, and the same image and counts,
+// (kernels/draw/binned_draw.cpp, plan_shading()): a phase more, and the same image and counts,
 // with culled and zero-area triangles among those the first binning leaves undecided.
 TEST_P(DrawThreads, CrowdedViewCutIntoSubBinsDrawsTheSameImage) {
   // Within one 64x64 bin; within about six, which only 8 threads cut.

@@ -15,9 +15,9 @@
 //   reference's by more than tests/draw/colour_bounds.hpp allows for that pixel;
 // - (textured, one triangle per draw) a colour, the reference's included, lies outside the bound
 //   of tests/draw/textured_bounds.hpp: the pixel's query recomputed by the kernels' formula
-//   (kernels/src/texture_planes.hpp) from the writer's snapped corners, its untextured colour
-//   from the reference's draw of the same triangle without the texture (whose depth must equal
-//   the textured draw's), nothing checked where the untextured colour bound is unbounded.
+//   (kernels/draw/shading/texture_planes.hpp) from the writer's snapped corners, its untextured
+//   colour from the reference's draw of the same triangle without the texture (whose depth must
+//   equal the textured draw's), nothing checked where the untextured colour bound is unbounded.
 //
 // Input layout (missing bytes read as zero):
 //   u8 width, u8 height          target size, each modulo kMaxTargetSide + 1 (0 is empty)
@@ -51,7 +51,7 @@
 //                                250, 251: max_anisotropy 0, 65; 252, 253: supersample_taps 0,
 //                                17; 254, 255: lod_bias inf, NaN
 //   per vertex: 2 numbers        the texture coordinates (s, t)
-// Texels are finite and within float texels' 2^10 [-1, 3], as tests/sample/sample_bounds.hpp
+// Texels are finite and within float texels' 2^10 [-1, 3], as tests/texture/sample_bounds.hpp
 // assumes; coordinates take any number, NaN and infinities included.
 // A number is a u8 tag: < 192 an i16 / 4096 (+-8 in 1/4096 steps), < 192 + 40 an entry of
 // kSpecialValues (zeros, +-1, the clip range's ends, the guard band, float's extremes, NaN,
@@ -78,19 +78,19 @@
 #include <string>
 #include <vector>
 
-#include "src/clip.hpp"
-#include "src/framebuffer_access.hpp"
+#include "draw/vertex_stage/clip.hpp"
+#include "core/framebuffer_access.hpp"
 #include "edgewise/edgewise.hpp"
 #include "edgewise/draw.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "random.hpp"
-#include "reference/interpolation_reference.hpp"
+#include "interpolation/interpolation_reference.hpp"
 #include "draw/colour_bounds.hpp"
 #include "draw/textured_bounds.hpp"
 #include "sampler_input.hpp"
 #include "seed_files.hpp"
-#include "src/texture_planes.hpp"
+#include "draw/shading/texture_planes.hpp"
 
 namespace {
 
@@ -719,8 +719,8 @@ bool same_counts(const DrawReport& a, const DrawReport& b) {
 }
 
 // The screen triangles draw() hands to the shading kernels for one mesh triangle: the vertex
-// stage (kernels/src/vertex_stage.cpp) replayed through the public clipper (identical on every
-// ISA, so this only has to name the writer of each pixel and its attributes).
+// stage (kernels/draw/vertex_stage/vertex_stage.cpp) replayed through the public clipper (identical
+// on every ISA, so this only has to name the writer of each pixel and its attributes).
 struct Piece {
   Vec2 snapped[3];
   ScreenTriangle screen;

@@ -8,7 +8,7 @@
 // - the double-precision reference is not finite (the texels are finite), or an ISA's result is
 //   not finite where the reference's is;
 // - a query with non-finite s or t does not give exactly (0, 0, 0, 0) on some ISA;
-// - a result lies further from the reference than tests/sample/sample_bounds.hpp allows for
+// - a result lies further from the reference than tests/texture/sample_bounds.hpp allows for
 //   that query (test::distance_to_reference > test::sample_bound).
 //
 // Input layout (missing bytes read as zero):
@@ -56,10 +56,10 @@
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "random.hpp"
-#include "reference/sample_reference.hpp"
+#include "texture/sample_reference.hpp"
 #include "sampler_input.hpp"
 #include "seed_files.hpp"
-#include "sample/sample_bounds.hpp"
+#include "texture/sample_bounds.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // Degenerate input gets finite, documented weights in the references and in every ISA's float32
-// interpolators (kernels/reference/interpolation_reference.hpp lists the rules).
+// interpolators (kernels/interpolation/interpolation_reference.hpp lists the rules).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "fast_interpolation.hpp"
 #include "isa_params.hpp"
-#include "reference/interpolation_reference.hpp"
+#include "interpolation/interpolation_reference.hpp"
 
 namespace edgewise::test {
 namespace {

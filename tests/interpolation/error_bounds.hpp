@@ -19,7 +19,7 @@
 #pragma once
 
 #include "edgewise/interpolation.hpp"
-#include "reference/interpolation_reference.hpp"
+#include "interpolation/interpolation_reference.hpp"
 
 namespace edgewise::test {
 
@@ -52,7 +52,7 @@ class RoundingModel {
   double u_;
 };
 
-// The float32 evaluators of kernels/generic/interpolation-inl.hpp, or the double references.
+// The float32 evaluators of kernels/interpolation/interpolation-inl.hpp, or the double references.
 enum class Evaluator { float32, reference };
 
 struct BoundedWeights {

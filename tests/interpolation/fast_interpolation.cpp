@@ -1,6 +1,6 @@
 #include "fast_interpolation.hpp"
 
-#include "src/isa_list.hpp"
+#include "core/isa_list.hpp"
 
 #define EDGEWISE_DECLARE_TEST_TABLE(name, arch, cpu_check) \
   namespace edgewise::isa_test_##name {                    \

@@ -1,4 +1,4 @@
-// The float32 interpolators of kernels/generic/interpolation-inl.hpp, compiled once per ISA
+// The float32 interpolators of kernels/interpolation/interpolation-inl.hpp, compiled once per ISA
 // with that ISA's flags (fast_interpolation_kernels.cpp), behind plain pointer-taking functions
 // the tests can call without SIMD types crossing translation units.
 #pragma once
@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "src/screen_triangle.hpp"
+#include "interpolation/screen_triangle.hpp"
 #include "edgewise/isa.hpp"
 
 namespace edgewise::test {

@@ -2,10 +2,10 @@
 // once per ISA (edgewise_add_isa_objects), in namespaces of its own (isa_test_<isa>), apart from
 // the library's copies of the same inline code.
 #define EDGEWISE_ISA_NAMESPACE EDGEWISE_CONCAT(isa_test_, EDGEWISE_BUILD_ISA)
-#include "src/isa_build.hpp"
+#include "core/isa_build.hpp"
 
 #include "fast_interpolation.hpp"
-#include "generic/interpolation-inl.hpp"
+#include "interpolation/interpolation-inl.hpp"
 #include "simd/lane_arch-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {

@@ -13,7 +13,7 @@
 #include "fast_interpolation.hpp"
 #include "interpolation_triangles.hpp"
 #include "isa_params.hpp"
-#include "reference/interpolation_reference.hpp"
+#include "interpolation/interpolation_reference.hpp"
 
 namespace edgewise::test {
 namespace {

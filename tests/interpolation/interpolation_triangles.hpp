@@ -5,7 +5,7 @@
 #include <span>
 #include <string_view>
 
-#include "src/screen_triangle.hpp"
+#include "interpolation/screen_triangle.hpp"
 #include "random.hpp"
 
 namespace edgewise::test {

@@ -11,7 +11,7 @@
 
 #include "error_bounds.hpp"
 #include "interpolation_triangles.hpp"
-#include "reference/interpolation_reference.hpp"
+#include "interpolation/interpolation_reference.hpp"
 
 namespace edgewise::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "interpolation_triangles.hpp"
-#include "reference/interpolation_reference.hpp"
+#include "interpolation/interpolation_reference.hpp"
 
 namespace edgewise::test {
 namespace {

@@ -1,13 +1,13 @@
 // view_mesh(): drawn with perspective-correct interpolation, the two triangles give every pixel
 // the view's own query. Checked through the texture-coordinate formula draw() uses
-// (kernels/src/texture_planes.hpp) on the screen triangle draw() derives from the mesh.
+// (kernels/draw/shading/texture_planes.hpp) on the screen triangle draw() derives from the mesh.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "edgewise/camera.hpp"
-#include "src/texture_planes.hpp"
+#include "draw/shading/texture_planes.hpp"
 #include "texture_scene/builtin_views.hpp"
 #include "texture_scene/view_mesh.hpp"
 

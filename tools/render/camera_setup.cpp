@@ -55,8 +55,8 @@ constexpr double kFramingMargin = 1.05;
 constexpr double kMaxFarOverNear = 1e4;
 // The transform's homogeneous scale is 2^j with |j| <= kMaxClipExponent where it can be: the
 // scene's clip-space w, about 2^j, then stays in the range draw() interpolates perspective-
-// correct, [2^-32, 2^32] (kernels/src/screen_triangle.hpp), with room for near and far planes
-// given on the command line, and far inside the range it projects, [2^-125, 2^64].
+// correct, [2^-32, 2^32] (kernels/interpolation/screen_triangle.hpp), with room for near and far
+// planes given on the command line, and far inside the range it projects, [2^-125, 2^64].
 constexpr int kMaxClipExponent = 20;
 // And the columns that multiply x, y and z are 2^(j - e) times entries of about 1 (e the scene's
 // exponent), with |j - e| <= kMaxColumnExponent: normal floats, well within float's range.

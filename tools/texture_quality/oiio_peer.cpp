@@ -12,8 +12,8 @@
 namespace edgewise::texture_quality {
 namespace {
 
-// In kPeerModeNames' order, as bench/sample_bench.cpp sets them: TextureLookup::sample's mip
-// mode, interpolation and anisotropy.
+// In kPeerModeNames' order, as bench/texture/sample_bench.cpp sets them: TextureLookup::sample's
+// mip mode, interpolation and anisotropy.
 struct PeerMode {
   int mip;
   int interpolation;

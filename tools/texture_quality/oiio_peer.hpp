@@ -1,7 +1,7 @@
 // OpenImageIO's TextureSystem as a peer, on the same queries and the same texels: the texture is
 // written as a tiled, mipmapped file (box-filtered mipmaps, as edgewise's default pyramid) and
 // looked up one query at a time with periodic wrap, in the modes the benchmark suite measures
-// (bench/sample_bench.cpp).
+// (bench/texture/sample_bench.cpp).
 #pragma once
 
 #include <filesystem>
