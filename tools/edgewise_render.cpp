@@ -327,9 +327,11 @@ void print_counts(const DrawReport& report) {
   print_count("rasterized", report.rasterized);
   print_count("fragments", report.fragments);
   print_count("fragments passed", report.fragments_passed);
-  print_count("tiles skipped", report.tiles_skipped, "hidden by the per-tile depth bound");
-  print_count("constant", report.fragments_constant, "fragments given one colour under the budget");
-  print_count("one texel", report.fragments_one_texel,
+  print_count("tiles skipped", report.statistics.tiles_skipped,
+              "hidden by the per-tile depth bound");
+  print_count("constant", report.statistics.fragments_constant,
+              "fragments given one colour under the budget");
+  print_count("one texel", report.statistics.fragments_one_texel,
               "fragments given one texel value per tile under the budget");
 }
 
@@ -561,8 +563,10 @@ InterleavedFrames render_interleaved(Framebuffer& exact_target, Framebuffer& bud
     const FrameTimes b = render_frames(budget_target, mesh, budgeted, 1);
     if (!same_counts(e.report, frames.exact_report) ||
         !same_counts(b.report, frames.budget_report) ||
-        b.report.fragments_constant != frames.budget_report.fragments_constant ||
-        b.report.fragments_one_texel != frames.budget_report.fragments_one_texel) {
+        b.report.statistics.fragments_constant !=
+            frames.budget_report.statistics.fragments_constant ||
+        b.report.statistics.fragments_one_texel !=
+            frames.budget_report.statistics.fragments_one_texel) {
       throw std::logic_error("draw() counted differently on two identical frames");
     }
     frames.exact_seconds.push_back(e.frame);
@@ -621,7 +625,7 @@ int compare_budget(const RenderSettings& settings, const LoadedScene& loaded, co
     return "fastest frame " + milliseconds(*std::min_element(seconds.begin(), seconds.end()));
   };
   const std::uint64_t written = frames.budget_report.fragments_passed;
-  const std::uint64_t constant = frames.budget_report.fragments_constant;
+  const std::uint64_t constant = frames.budget_report.statistics.fragments_constant;
   const double share =
       written > 0 ? 100.0 * static_cast<double>(constant) / static_cast<double>(written) : 0.0;
   std::cout << "without and with the budget (median of " << settings.repeat
@@ -632,7 +636,7 @@ int compare_budget(const RenderSettings& settings, const LoadedScene& loaded, co
   print_row("ratio", fixed_text(exact_median / budget_median, 3),
             "exact / budget: above 1, the budget is faster");
   print_count("constant", constant, fixed_text(share, 1) + "% of the fragments written");
-  const std::uint64_t one_texel = frames.budget_report.fragments_one_texel;
+  const std::uint64_t one_texel = frames.budget_report.statistics.fragments_one_texel;
   print_count(
       "one texel", one_texel,
       fixed_text(

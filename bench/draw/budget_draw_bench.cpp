@@ -110,8 +110,8 @@ void budget_draw(benchmark::State& state, Isa isa, const BudgetScene* s, Variant
   }
   if (last.fragments_passed == 0) state.SkipWithError("the scene draws nothing");
   const double written = double(last.fragments_passed == 0 ? 1 : last.fragments_passed);
-  state.counters["constant"] = double(last.fragments_constant) / written;
-  state.counters["one_texel"] = double(last.fragments_one_texel) / written;
+  state.counters["constant"] = double(last.statistics.fragments_constant) / written;
+  state.counters["one_texel"] = double(last.statistics.fragments_one_texel) / written;
   if (variant != Variant::budget) return;
   // The budget's promise, measured on the last frame.
   Framebuffer exact(kBudgetWidth, kBudgetHeight);

@@ -151,9 +151,9 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
     report.rasterized -= counts.triangles.culled + counts.triangles.errors;
     report.fragments += counts.shading.fragments;
     report.fragments_passed += counts.shading.passed;
-    report.tiles_skipped += counts.shading.tiles_skipped;
-    report.fragments_constant += counts.shading.constant;
-    report.fragments_one_texel += counts.shading.one_texel;
+    report.statistics.tiles_skipped += counts.shading.tiles_skipped;
+    report.statistics.fragments_constant += counts.shading.constant;
+    report.statistics.fragments_one_texel += counts.shading.one_texel;
   }
 }
 

@@ -143,9 +143,9 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
   report.errors += raster.errors;
   report.fragments = counts.fragments;
   report.fragments_passed = counts.passed;
-  report.tiles_skipped = counts.tiles_skipped;
-  report.fragments_constant = counts.constant;
-  report.fragments_one_texel = counts.one_texel;
+  report.statistics.tiles_skipped = counts.tiles_skipped;
+  report.statistics.fragments_constant = counts.constant;
+  report.statistics.fragments_one_texel = counts.one_texel;
 }
 
 }  // namespace detail

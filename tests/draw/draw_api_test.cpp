@@ -261,9 +261,9 @@ TEST_P(RenderApi, HiddenTilesAreSkippedWithTheSameResult) {
     options.isa = Isa::reference;
     draw(reference, {positions, colors, {}, {}}, options);
     if (isa() != Isa::reference) {
-      EXPECT_EQ(report.tiles_skipped, 40u);
+      EXPECT_EQ(report.statistics.tiles_skipped, 40u);
     }
-    EXPECT_EQ(plain.tiles_skipped, 0u);
+    EXPECT_EQ(plain.statistics.tiles_skipped, 0u);
     EXPECT_EQ(report.fragments, plain.fragments);
     EXPECT_EQ(report.fragments_passed, plain.fragments_passed);
     EXPECT_EQ(read(with).rgba, read(reference).rgba);

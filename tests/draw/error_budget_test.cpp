@@ -139,10 +139,11 @@ Chosen check_budget(const Scene& scene, DrawOptions options, float budget,
     EXPECT_TRUE(d.same_depth) << label << " on " << name_of(isa);
     EXPECT_EQ(budgeted.report.fragments_passed, exact.report.fragments_passed) << label;
     if (codes == 0) {
-      EXPECT_EQ(budgeted.report.fragments_constant, 0u) << label;
-      EXPECT_EQ(budgeted.report.fragments_one_texel, 0u) << label;
+      EXPECT_EQ(budgeted.report.statistics.fragments_constant, 0u) << label;
+      EXPECT_EQ(budgeted.report.statistics.fragments_one_texel, 0u) << label;
     }
-    const Chosen counts{budgeted.report.fragments_constant, budgeted.report.fragments_one_texel};
+    const Chosen counts{budgeted.report.statistics.fragments_constant,
+                        budgeted.report.statistics.fragments_one_texel};
     if (isa == Isa::reference) reference_chosen = counts;
     chosen.emplace_back(isa, counts);
   }
@@ -285,13 +286,13 @@ TEST(ErrorBudget, ExactWhereNoBoundHolds) {
   options.shading = Shading::gouraud;
   options.error_budget = 4.0f / 255;
   const Rendered multisampled = render(Isa::reference, scene, options, kWidth, kHeight, 4);
-  EXPECT_EQ(multisampled.report.fragments_constant, 0u);
+  EXPECT_EQ(multisampled.report.statistics.fragments_constant, 0u);
   options.interpolation = InterpolationMethod::edge_functions;
   const Rendered other_method = render(Isa::reference, scene, options, kWidth, kHeight);
-  EXPECT_EQ(other_method.report.fragments_constant, 0u);
+  EXPECT_EQ(other_method.report.statistics.fragments_constant, 0u);
   options.interpolation = InterpolationMethod::plane_equations;
   const Rendered planes = render(Isa::reference, scene, options, kWidth, kHeight);
-  EXPECT_GT(planes.report.fragments_constant, 0u);
+  EXPECT_GT(planes.report.statistics.fragments_constant, 0u);
 }
 
 }  // namespace

@@ -136,7 +136,7 @@ TEST_P(MultisampleRender, HierarchicalDepthChangesNothing) {
     EXPECT_EQ(skipping.rgba, plain.rgba);
     EXPECT_EQ(skipping.report.fragments_passed, plain.report.fragments_passed);
     if (isa() != Isa::reference) {
-      EXPECT_GT(skipping.report.tiles_skipped, 0u);
+      EXPECT_GT(skipping.report.statistics.tiles_skipped, 0u);
     }
   }
 }

@@ -69,7 +69,7 @@ TEST_P(SmallTriangles, DepthAndCountsEqualTheReference) {
         EXPECT_EQ(actual.report.fragments_passed, expected.report.fragments_passed) << where;
         ASSERT_EQ(actual.depth, expected.depth) << where;  // bit for bit
         // The reference never skips tiles; the ISAs skip the occluder's hidden ones.
-        EXPECT_EQ(actual.report.tiles_skipped > 0,
+        EXPECT_EQ(actual.report.statistics.tiles_skipped > 0,
                   isa() != Isa::reference && hierarchical &&
                       (test == DepthTest::less || test == DepthTest::less_equal))
             << where;

@@ -153,7 +153,7 @@ void expect_same_report(const DrawReport& one, const DrawReport& many, const std
   EXPECT_EQ(one.rasterized, many.rasterized) << what;
   EXPECT_EQ(one.fragments, many.fragments) << what;
   EXPECT_EQ(one.fragments_passed, many.fragments_passed) << what;
-  EXPECT_EQ(one.tiles_skipped, many.tiles_skipped) << what;
+  EXPECT_EQ(one.statistics.tiles_skipped, many.statistics.tiles_skipped) << what;
   EXPECT_EQ(one.isa, many.isa) << what;
 }
 
@@ -284,7 +284,7 @@ TEST_P(DrawThreads, ScissorAndHierarchicalDepthDrawTheSameImage) {
                                                                {mesh_of(second), second_options}};
   const Frame one = render(draws, 1);
   if (isa() != Isa::reference) {
-    EXPECT_GT(one.reports[1].tiles_skipped, 0u);
+    EXPECT_GT(one.reports[1].statistics.tiles_skipped, 0u);
   }
   for (std::size_t threads : kThreadCounts)
     expect_same_frame(one, render(draws, threads), std::to_string(threads) + " threads");

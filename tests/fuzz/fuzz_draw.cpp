@@ -1239,8 +1239,10 @@ void check_budget(const Case& c, std::span<const Output> exact) {
     const Output& got = outputs[i];
     const Output& want = exact[i];
     if (got.threw) fail(budgeted, "draw() threw under an error budget", outputs, got.error);
-    if (got.report.fragments_constant != outputs.front().report.fragments_constant ||
-        got.report.fragments_one_texel != outputs.front().report.fragments_one_texel) {
+    if (got.report.statistics.fragments_constant !=
+            outputs.front().report.statistics.fragments_constant ||
+        got.report.statistics.fragments_one_texel !=
+            outputs.front().report.statistics.fragments_one_texel) {
       fail(budgeted, "an ISA's error-budget choices differ from the reference's", outputs,
            std::string(name_of(got.isa)));
     }

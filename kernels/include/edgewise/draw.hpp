@@ -120,6 +120,18 @@ struct DrawOptions {
   TaskExecutor executor;
 };
 
+// What draw()'s shortcuts did, none of which changes the image beyond what DrawOptions allows:
+// statistics for tuning a scene, apart from the report's results.
+struct DrawStatistics {
+  std::uint64_t tiles_skipped = 0;  // covered tiles rejected whole by hierarchical depth
+  // Of DrawReport::fragments_passed, those written with one colour per triangle or per tile under
+  // DrawOptions::error_budget.
+  std::uint64_t fragments_constant = 0;
+  // Of DrawReport::fragments_passed, textured ones whose texel was one value for their whole tile
+  // under the budget (the filter not run; the shading still per pixel).
+  std::uint64_t fragments_one_texel = 0;
+};
+
 // What became of the mesh's triangles. Each one is counted once: outside, culled or an error,
 // as it is or after clipping; clipped, when clipping cut it into clip_triangles pieces; or
 // rasterized. Each piece is in turn culled, an error or rasterized. So always
@@ -134,20 +146,14 @@ struct DrawReport {
   std::uint64_t clip_triangles = 0;  // the pieces of the clipped triangles
   std::uint64_t outside = 0;         // entirely outside the view volume
   std::uint64_t culled = 0;          // by winding, zero area after snapping, or degenerate in
-                                     // clipping (ClipStatus::culled_degenerate, clip.hpp)
+                                     // clipping (docs/design/vertex-stage.md, "Clipping")
   std::uint64_t errors = 0;          // non-finite or out-of-range clip-space positions, bad indices
   // Screen triangles drawn: set up and walked, or found from their box alone to cover no sample.
   std::uint64_t rasterized = 0;
   std::uint64_t fragments = 0;         // covered samples
   std::uint64_t fragments_passed = 0;  // of those, passing the depth test (and so written)
-  std::uint64_t tiles_skipped = 0;     // covered tiles rejected whole by hierarchical depth
-  // Of fragments_passed, those written with one colour per triangle or per tile under
-  // DrawOptions::error_budget.
-  std::uint64_t fragments_constant = 0;
-  // Of fragments_passed, textured ones whose texel was one value for their whole tile under the
-  // budget (the filter not run; the shading still per pixel).
-  std::uint64_t fragments_one_texel = 0;
   Isa isa = Isa::reference;
+  DrawStatistics statistics;  // how the shortcuts fared: for tuning, not part of the result
 };
 
 // Throws std::invalid_argument for inconsistent spans (attribute counts, index count not a
