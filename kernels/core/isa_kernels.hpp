@@ -8,7 +8,6 @@
 #include <type_traits>
 
 #include "kernel_table.hpp"
-#include "../texture/sample_kernels.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 

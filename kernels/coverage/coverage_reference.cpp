@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "../core/kernel_table.hpp"
+#include "../core/reference_kernels.hpp"
 
 namespace edgewise::reference {
 namespace {
@@ -216,6 +216,10 @@ PixelRect sample_box(const SnappedTriangle& t, const detail::SampleWindow& windo
 
 }  // namespace
 
+// Drops from `indices` each triangle whose indices are in range and that snap_and_classify()
+// culls, or draws with no sample of `window` between its vertices' bounds, one at a time; the
+// rest keep their order; with a grid in `output`, the bin of each kept triangle's box, computed
+// from its snapped vertices.
 detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
                                                std::uint32_t* indices, std::size_t triangles,
                                                CullMode cull, const detail::SampleWindow& window,
@@ -245,6 +249,56 @@ detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t
     ++result.kept;
   }
   return result;
+}
+
+// The reference's coverage kernels (kernel_table.hpp).
+
+namespace {
+
+// Runs the reference over a batch; `tile` receives (triangle, tile_x, tile_y, mask, sample):
+// pixel centres (sample 0) or, with a multisample pattern, every sample of it.
+template <class TileFn>
+void for_each_covered_tile(const detail::TriangleBatch& batch, RasterReport& report,
+                           TileFn&& tile) {
+  reference::for_each_drawn_triangle(
+      batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
+        const auto triangle = static_cast<std::uint32_t>(t);
+        if (batch.samples.size() > 1) {
+          reference::for_each_multisample_tile(
+              snapped, batch.clip, batch.samples,
+              [&](std::uint32_t tx, std::uint32_t ty, std::uint8_t sample, std::uint64_t mask) {
+                tile(triangle, tx, ty, mask, sample);
+              });
+          return;
+        }
+        reference::for_each_tile(snapped, batch.clip,
+                                 [&](std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
+                                   tile(triangle, tx, ty, mask, std::uint8_t{0});
+                                 });
+      });
+}
+
+}  // namespace
+
+void rasterize(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report) {
+  std::vector<TileCoverage> tiles;
+  for_each_covered_tile(batch, report,
+                        [&](std::uint32_t t, std::uint32_t tx, std::uint32_t ty, std::uint64_t mask,
+                            std::uint8_t sample) {
+                          tiles.push_back({t, static_cast<std::uint16_t>(tx),
+                                           static_cast<std::uint16_t>(ty), mask, sample});
+                        });
+  if (!tiles.empty()) sink.consume(tiles);
+}
+
+void count_coverage(const detail::TriangleBatch& batch, RasterReport& report,
+                    std::uint64_t& pixels) {
+  for_each_covered_tile(
+      batch, report,
+      [&](std::uint32_t, std::uint32_t, std::uint32_t, std::uint64_t mask, std::uint8_t) {
+        for (; mask != 0; mask &= mask - 1)
+          ++pixels;  // plain bit counting, no intrinsics
+      });
 }
 
 }  // namespace edgewise::reference

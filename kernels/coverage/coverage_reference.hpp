@@ -58,13 +58,4 @@ void for_each_drawn_triangle(
     const detail::TriangleBatch& batch, RasterReport& report,
     const std::function<void(std::size_t, const SnappedTriangle&)>& triangle);
 
-// Drops from `indices` each triangle whose indices are in range and that snap_and_classify()
-// culls, or draws with no sample of `window` between its vertices' bounds, one at a time; the
-// rest keep their order; with a grid in `output`, the bin of each kept triangle's box, computed
-// from its snapped vertices.
-detail::DroppedTriangles drop_culled_triangles(const Vec2* vertices, std::size_t vertex_count,
-                                               std::uint32_t* indices, std::size_t triangles,
-                                               CullMode cull, const detail::SampleWindow& window,
-                                               const detail::BinOutput& output);
-
 }  // namespace edgewise::reference

@@ -18,7 +18,7 @@
 #include "shading/shading_budget.hpp"
 #include "shading/texture_planes.hpp"
 #include "../coverage/coverage_reference.hpp"
-#include "draw_reference.hpp"
+#include "../core/reference_kernels.hpp"
 #include "../interpolation/interpolation_reference.hpp"
 #include "../texture/sample_reference.hpp"
 

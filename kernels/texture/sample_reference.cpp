@@ -8,8 +8,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "../core/reference_kernels.hpp"
 #include "level_of_detail.hpp"
 #include "sample_reference_terms.hpp"
+#include "texture_description.hpp"
 
 namespace edgewise::reference {
 
@@ -458,6 +460,38 @@ Rgba sample(const Texture& texture, const SamplerOptions& options, const Texture
       break;
   }
   throw std::invalid_argument("reference::sample: unknown filter");
+}
+
+// The reference's sampling kernels (kernel_table.hpp): each query by sample() above, rounded to
+// float on the way out.
+
+namespace {
+
+Vec4 to_float(const reference::Rgba& rgba) {
+  return {static_cast<float>(rgba[0]), static_cast<float>(rgba[1]), static_cast<float>(rgba[2]),
+          static_cast<float>(rgba[3])};
+}
+
+}  // namespace
+
+void sample(const detail::TextureDescription& texture, const SamplerOptions& options,
+            const TextureQuery* queries, std::size_t count, Vec4* out) {
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = to_float(reference::sample(*texture.texture, options, queries[i]));
+}
+
+void sample_fields(const detail::TextureDescription& texture, const SamplerOptions& options,
+                   const detail::QueryFields& queries, std::size_t count,
+                   const detail::ResultChannels& out) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const TextureQuery query{queries.s[i],    queries.t[i],    queries.dsdx[i],
+                             queries.dtdx[i], queries.dsdy[i], queries.dtdy[i]};
+    const Vec4 rgba = to_float(reference::sample(*texture.texture, options, query));
+    out.c[0][i] = rgba.x;
+    out.c[1][i] = rgba.y;
+    out.c[2][i] = rgba.z;
+    out.c[3][i] = rgba.w;
+  }
 }
 
 }  // namespace edgewise::reference

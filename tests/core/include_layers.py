@@ -3,8 +3,8 @@
 
 1. The capability folders are ordered simd, core, interpolation, coverage, texture,
    antialiasing, draw (its stage folders included): a file includes nothing from a folder later
-   in that order. The kernel table's own files gather every capability's kernels and are the
-   only exceptions.
+   in that order. The kernel table (core/kernel_table.hpp), which lists every capability's
+   kernels with their call types, is the only exception.
 2. Kernels written once over xsimd batches (*-inl.hpp) do not include the kernel table: they
    take their inputs' headers, and another kernel of their ISA through core/isa_kernels.hpp.
 3. Raw intrinsics (_mm*) appear in simd/ only.
@@ -17,12 +17,7 @@ import re
 import sys
 
 ORDER = ["simd", "core", "interpolation", "coverage", "texture", "antialiasing", "draw"]
-TABLE_FILES = {
-    "core/kernel_table.hpp",
-    "core/isa_kernels.hpp",
-    "core/kernel_table_kernels.cpp",
-    "core/reference_kernel_table.cpp",
-}
+TABLE_FILES = {"core/kernel_table.hpp"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
 INTRINSIC = re.compile(r"\b_mm\w*")
 

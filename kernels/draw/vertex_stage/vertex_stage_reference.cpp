@@ -1,4 +1,11 @@
-#include "vertex_stage_reference.hpp"
+// The vertex stage of draw() in plain scalar code: the reference's kernels (kernel_table.hpp) and
+// the oracle of every ISA's (vertex_stage-inl.hpp).
+#include <cstddef>
+#include <cstdint>
+
+#include "../../core/reference_kernels.hpp"
+#include "edgewise/camera.hpp"
+#include "vertex_stage.hpp"
 
 namespace edgewise::reference {
 namespace {
@@ -26,6 +33,8 @@ detail::TriangleClass triangle_class(const ClipClass& a, const ClipClass& b, con
 
 }  // namespace
 
+// Each vertex of [first, last) through transform(), classify_clip_vertex(), to_screen() and
+// snap(), one at a time; its class kept as a code of the reference's own.
 void map_vertices(const detail::VertexStageCall& call, std::size_t first, std::size_t last,
                   detail::ScreenMesh& out, std::int32_t* codes) {
   for (std::size_t i = first; i < last; ++i) {
@@ -38,6 +47,8 @@ void map_vertices(const detail::VertexStageCall& call, std::size_t first, std::s
   }
 }
 
+// Each triangle of [first, last): its class read from its vertices' classes, then added by the
+// shared add_triangle().
 void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t* codes,
                         std::size_t first, std::size_t last, detail::ScreenMesh& out,
                         DrawReport& report) {
@@ -57,6 +68,11 @@ void assemble_triangles(const detail::VertexStageCall& call, const std::int32_t*
                  : detail::TriangleClass::bad_index;
     detail::add_triangle(call, corner, triangle, out, report);
   }
+}
+
+void transform_vertices(const Mat4& m, const Vec3* in, std::size_t count, Vec4* out) {
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = transform(m, in[i]);
 }
 
 }  // namespace edgewise::reference
