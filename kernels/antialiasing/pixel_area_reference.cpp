@@ -106,33 +106,32 @@ double triangle_area(const SnappedTriangle& tri) {
 // past their centres) by the exact-area reference, tile by tile in row order.
 void rasterize_areas(const detail::TriangleBatch& batch, AreaSink& sink, RasterReport& report) {
   std::vector<AreaTile> tiles;
-  reference::for_each_drawn_triangle(
-      batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
-        PixelRect box = reference::candidate_pixels(snapped, batch.clip);
-        box = {std::max(box.x0 - 1, batch.clip.x0), std::max(box.y0 - 1, batch.clip.y0),
-               std::min(box.x1 + 1, batch.clip.x1), std::min(box.y1 + 1, batch.clip.y1)};
-        if (box.empty()) return;
-        for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
-          for (std::int32_t tx = box.x0 / kTileSize; tx <= (box.x1 - 1) / kTileSize; ++tx) {
-            AreaTile tile{static_cast<std::uint32_t>(t),
-                          static_cast<std::uint16_t>(tx),
-                          static_cast<std::uint16_t>(ty),
-                          0,
-                          {}};
-            for (int bit = 0; bit < kTileSize * kTileSize; ++bit) {
-              const std::int32_t px = tx * kTileSize + bit % kTileSize;
-              const std::int32_t py = ty * kTileSize + bit / kTileSize;
-              if (px < box.x0 || px >= box.x1 || py < box.y0 || py >= box.y1) continue;
-              const double area = reference::pixel_area(snapped, px, py);
-              if (area > 0.0) {
-                tile.mask |= std::uint64_t{1} << bit;
-                tile.area[bit] = static_cast<float>(area);
-              }
-            }
-            if (tile.mask != 0) tiles.push_back(tile);
+  for_each_drawn_triangle(batch, report, [&](std::size_t t, const SnappedTriangle& snapped) {
+    PixelRect box = candidate_pixels(snapped, batch.clip);
+    box = {std::max(box.x0 - 1, batch.clip.x0), std::max(box.y0 - 1, batch.clip.y0),
+           std::min(box.x1 + 1, batch.clip.x1), std::min(box.y1 + 1, batch.clip.y1)};
+    if (box.empty()) return;
+    for (std::int32_t ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty) {
+      for (std::int32_t tx = box.x0 / kTileSize; tx <= (box.x1 - 1) / kTileSize; ++tx) {
+        AreaTile tile{static_cast<std::uint32_t>(t),
+                      static_cast<std::uint16_t>(tx),
+                      static_cast<std::uint16_t>(ty),
+                      0,
+                      {}};
+        for (int bit = 0; bit < kTileSize * kTileSize; ++bit) {
+          const std::int32_t px = tx * kTileSize + bit % kTileSize;
+          const std::int32_t py = ty * kTileSize + bit / kTileSize;
+          if (px < box.x0 || px >= box.x1 || py < box.y0 || py >= box.y1) continue;
+          const double area = pixel_area(snapped, px, py);
+          if (area > 0.0) {
+            tile.mask |= std::uint64_t{1} << bit;
+            tile.area[bit] = static_cast<float>(area);
           }
         }
-      });
+        if (tile.mask != 0) tiles.push_back(tile);
+      }
+    }
+  });
   if (!tiles.empty()) sink.consume(tiles);
 }
 

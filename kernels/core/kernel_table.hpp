@@ -29,10 +29,9 @@ struct VertexStageCall;
 struct ScreenMesh;
 
 // Every kernel, once: its name and its function type, in the table's order. The table's members,
-// each ISA's declarations (isa_kernels.hpp) and its table (kernels/core/kernel_table_kernels.cpp)
-// are made from this list; the reference's table names its own functions
-// (reference_kernel_table.cpp), and designated initializers make the compiler check both against
-// the members.
+// each ISA's declarations (isa_kernels.hpp) and its table (kernel_table_kernels.cpp) are made from
+// this list, and so are the reference's (reference_kernels.hpp, reference_kernel_table.cpp);
+// designated initializers make the compiler check every table against the members.
 #define EDGEWISE_FOR_EACH_KERNEL(X)                                                                \
   /* Coverage (coverage.hpp): tiles to a sink, or covered pixels counted. */                       \
   X(rasterize, void(const detail::TriangleBatch& batch, CoverageSink& sink, RasterReport& report)) \

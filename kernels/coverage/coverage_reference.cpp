@@ -260,22 +260,18 @@ namespace {
 template <class TileFn>
 void for_each_covered_tile(const detail::TriangleBatch& batch, RasterReport& report,
                            TileFn&& tile) {
-  reference::for_each_drawn_triangle(
-      batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
-        const auto triangle = static_cast<std::uint32_t>(t);
-        if (batch.samples.size() > 1) {
-          reference::for_each_multisample_tile(
-              snapped, batch.clip, batch.samples,
-              [&](std::uint32_t tx, std::uint32_t ty, std::uint8_t sample, std::uint64_t mask) {
-                tile(triangle, tx, ty, mask, sample);
-              });
-          return;
-        }
-        reference::for_each_tile(snapped, batch.clip,
-                                 [&](std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
-                                   tile(triangle, tx, ty, mask, std::uint8_t{0});
-                                 });
-      });
+  for_each_drawn_triangle(batch, report, [&](std::size_t t, const SnappedTriangle& snapped) {
+    const auto triangle = static_cast<std::uint32_t>(t);
+    if (batch.samples.size() > 1) {
+      for_each_multisample_tile(snapped, batch.clip, batch.samples,
+                                [&](std::uint32_t tx, std::uint32_t ty, std::uint8_t sample,
+                                    std::uint64_t mask) { tile(triangle, tx, ty, mask, sample); });
+      return;
+    }
+    for_each_tile(snapped, batch.clip, [&](std::uint32_t tx, std::uint32_t ty, std::uint64_t mask) {
+      tile(triangle, tx, ty, mask, std::uint8_t{0});
+    });
+  });
 }
 
 }  // namespace
