@@ -45,4 +45,12 @@ void register_budget_draw_benchmarks();
 // and the MeshDraw/ meshes, when built with EGL and OpenGL.
 void register_draw_peer_benchmarks();
 
+// Occluders/<isa>/size:<px>[/threads:all]: OcclusionBuffer::draw_occluders() on Masked Occlusion
+// Culling's fill-rate protocol; RectQueries/<isa>: test_rects() against a screen of occluders.
+void register_occlusion_benchmarks();
+
+// OccluderPeer/moc/... and RectQueryPeer/moc/...: Masked Occlusion Culling on the same workloads,
+// when built against it (EDGEWISE_MOC_DIR, bench/README.md).
+void register_moc_peer_benchmarks();
+
 }  // namespace edgewise::bench

@@ -22,6 +22,10 @@ int main(int argc, char** argv) {
   edgewise::bench::register_clip_benchmarks();
   edgewise::bench::register_draw_benchmarks();
   edgewise::bench::register_resolve_benchmarks();
+  edgewise::bench::register_occlusion_benchmarks();
+#if defined(EDGEWISE_BENCH_MOC)
+  edgewise::bench::register_moc_peer_benchmarks();
+#endif
 #if defined(EDGEWISE_BENCH_SAMPLING)
   edgewise::bench::register_sample_benchmarks();
   edgewise::bench::register_textured_draw_benchmarks();

@@ -10,12 +10,14 @@
 
 #include "edgewise/camera.hpp"
 #include "edgewise/coverage.hpp"
+#include "edgewise/occlusion.hpp"
 #include "edgewise/pixel_area.hpp"
 #include "../coverage/bin_grid.hpp"
 #include "isa_list.hpp"
 #include "../antialiasing/resolve_call.hpp"
 #include "../texture/sample_kernels.hpp"
 #include "../coverage/triangle_batch.hpp"
+#include "../occlusion/occlusion_call.hpp"
 
 namespace edgewise {
 struct DrawReport;
@@ -72,7 +74,14 @@ struct ScreenMesh;
   X(sample, std::remove_pointer_t<detail::SampleKernel>)                                           \
   X(sample_fields, std::remove_pointer_t<detail::SampleFieldsKernel>)                              \
   /* Exact-area coverage (pixel_area.hpp): each triangle's pixel areas to a sink. */               \
-  X(rasterize_areas, void(const detail::TriangleBatch& batch, AreaSink& sink, RasterReport& report))
+  X(rasterize_areas,                                                                               \
+    void(const detail::TriangleBatch& batch, AreaSink& sink, RasterReport& report))                \
+  /* Occlusion (occlusion.hpp): rectangles of samples against the depths, and each tile's largest  \
+     depth for tiles [first, last). */                                                             \
+  X(test_sample_rects, void(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,  \
+                            std::size_t count, Visibility* out))                                   \
+  X(occlusion_tile_maxima,                                                                         \
+    void(const float* tiles, std::size_t first, std::size_t last, float* out))
 
 struct KernelTable {
   Isa isa;  // the ISA the table's objects were compiled for

@@ -1,8 +1,9 @@
 // The scalar reference's kernels: the list of kernel_table.hpp declared in namespace
 // edgewise::reference, as isa_kernels.hpp declares each ISA's. Each is defined beside its
 // capability's reference (coverage_reference.cpp, pixel_area_reference.cpp,
-// resolve_reference.cpp, sample_reference.cpp, vertex_stage_reference.cpp, draw_reference.cpp),
-// and reference_kernel_table.cpp gathers them into the reference's table.
+// resolve_reference.cpp, sample_reference.cpp, vertex_stage_reference.cpp, draw_reference.cpp,
+// occlusion_reference.cpp), and reference_kernel_table.cpp gathers them into the reference's
+// table.
 #pragma once
 
 #include <cstddef>

@@ -2,8 +2,8 @@
 """The layering of kernels/ (docs/contributing.md, "One folder per capability").
 
 1. The capability folders are ordered simd, core, interpolation, coverage, texture,
-   antialiasing, draw (its stage folders included): a file includes nothing from a folder later
-   in that order. The kernel table (core/kernel_table.hpp), which lists every capability's
+   antialiasing, draw (its stage folders included), occlusion: a file includes nothing from a
+   folder later in that order. The kernel table (core/kernel_table.hpp), which lists every capability's
    kernels with their call types, is the only exception.
 2. Kernels written once over xsimd batches (*-inl.hpp) do not include the kernel table: they
    take their inputs' headers, and another kernel of their ISA through core/isa_kernels.hpp.
@@ -16,7 +16,9 @@ import os
 import re
 import sys
 
-ORDER = ["simd", "core", "interpolation", "coverage", "texture", "antialiasing", "draw"]
+ORDER = [
+    "simd", "core", "interpolation", "coverage", "texture", "antialiasing", "draw", "occlusion"
+]
 TABLE_FILES = {"core/kernel_table.hpp"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
 INTRINSIC = re.compile(r"\b_mm\w*")

@@ -208,7 +208,9 @@ TEST_P(IsaForcing, KernelTableIsComplete) {
   EXPECT_NE(table.sample, nullptr);
   EXPECT_NE(table.sample_fields, nullptr);
   EXPECT_NE(table.rasterize_areas, nullptr);
-  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 13,
+  EXPECT_NE(table.test_sample_rects, nullptr);
+  EXPECT_NE(table.occlusion_tile_maxima, nullptr);
+  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 15,
                 "a kernel was added to KernelTable: check it here");
 }
 

@@ -11,6 +11,7 @@
 #include "edgewise/pixel_area.hpp"
 #include "edgewise/resolve.hpp"
 #include "edgewise/draw.hpp"
+#include "edgewise/occlusion.hpp"
 #include "edgewise/sample.hpp"
 #include "edgewise/texture.hpp"
 #include "edgewise/threads.hpp"

@@ -1,0 +1,92 @@
+// Occlusion culling: occluders drawn by OcclusionBuffer::draw_occluders() with the fill-rate
+// protocol of Masked Occlusion Culling (fillrate_triangles.hpp), one thread and all threads, and
+// rectangle queries against a screen full of occluders.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "../benchmarks.hpp"
+#include "edgewise/edgewise.hpp"
+#include "fillrate_triangles.hpp"
+#include "occlusion_workloads.hpp"
+
+namespace edgewise::bench {
+namespace {
+
+// Back to front, every covered pixel is written: a run's written pixels must be about its
+// triangles' area (edge pixels make up the difference at 10 px), or it measured something else.
+constexpr double kOccluderWrittenTolerance = 0.05;
+
+void occluder_fill(benchmark::State& state, Isa isa, int size, std::size_t threads) {
+  const FillrateTriangles& triangles = fillrate_triangles(size, fillrate_count(size));
+  OcclusionBuffer buffer(kWidth, kHeight);
+  OcclusionOptions options;
+  options.isa = isa;
+  options.threads = threads;
+  DrawReport report;
+  for (auto _ : state) {
+    state.PauseTiming();
+    buffer.clear();
+    state.ResumeTiming();
+    report = buffer.draw_occluders({triangles.ndc, {}}, options);
+    benchmark::DoNotOptimize(report.fragments_passed);
+  }
+  const double area = 0.5 * size * size * static_cast<double>(triangles.triangles());
+  if (report.isa != isa) {
+    state.SkipWithError("draw_occluders ran another ISA than the one asked for");
+  } else if (std::abs(static_cast<double>(report.fragments_passed) - area) >
+             kOccluderWrittenTolerance * area) {
+    const std::string message = "wrote " + std::to_string(report.fragments_passed) +
+                                " pixels, expected about " + std::to_string(std::uint64_t(area));
+    state.SkipWithError(message.c_str());
+  }
+  const double iterations = static_cast<double>(state.iterations());
+  state.counters["triangles"] = benchmark::Counter(
+      static_cast<double>(triangles.triangles()) * iterations, benchmark::Counter::kIsRate);
+  state.counters["pixels"] = benchmark::Counter(
+      static_cast<double>(report.fragments_passed) * iterations, benchmark::Counter::kIsRate);
+}
+
+void rect_query_rate(benchmark::State& state, Isa isa) {
+  const OcclusionBuffer& buffer = query_scene(isa);
+  const std::vector<OcclusionRect>& rects = query_rects();
+  std::vector<Visibility> answers(rects.size());
+  for (auto _ : state) {
+    buffer.test_rects(rects, answers, isa);
+    benchmark::DoNotOptimize(answers.data());
+  }
+  std::size_t occluded = 0;
+  for (const Visibility v : answers)
+    occluded += v == Visibility::occluded;
+  state.counters["queries"] = benchmark::Counter(
+      static_cast<double>(rects.size()) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate);
+  state.counters["occluded_share"] = static_cast<double>(occluded) / rects.size();
+}
+
+}  // namespace
+
+void register_occlusion_benchmarks() {
+  for (Isa isa : supported_isas()) {
+    if (isa == Isa::reference) continue;  // the reference draws through draw()'s reference
+    for (const int size : kFillrateSizes) {
+      for (const std::size_t threads : {std::size_t{1}, std::size_t{0}}) {
+        const std::string name = "Occluders/" + std::string(name_of(isa)) +
+                                 "/size:" + std::to_string(size) +
+                                 (threads == 1 ? "" : "/threads:all");
+        benchmark::RegisterBenchmark(name.c_str(), occluder_fill, isa, size, threads)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+      }
+    }
+  }
+  for (Isa isa : supported_isas()) {
+    const std::string name = "RectQueries/" + std::string(name_of(isa));
+    benchmark::RegisterBenchmark(name.c_str(), rect_query_rate, isa)->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace edgewise::bench

@@ -1,0 +1,128 @@
+// Occlusion culling: occluders drawn into a depth buffer, then objects tested against it, so that
+// a renderer draws only what can be seen (docs/design/occlusion.md).
+//
+// An OcclusionBuffer holds one depth per pixel of a view: z/w in Direct3D's clip space
+// (camera.hpp), cleared to 1, the far plane. draw_occluders() draws meshes into it through
+// draw()'s pipeline (the same snapping, fill rule, clipping, culling, depth formula and threads),
+// depth test less with writes: the depth it holds is, bit for bit, what draw() of the same meshes
+// leaves in a Framebuffer. A query then asks, for each object, whether any sample it covers would
+// pass the depth test less against those depths:
+// - test_triangles(): the object's own triangles, exactly as draw() would test them;
+// - test_rects(): screen rectangles, each with the nearest depth of what it bounds;
+// - test_boxes(): boxes in object space, under a transform to clip space (perspective or
+//   orthographic).
+// Each answer is visible, occluded, or outside (no sample of the view to cover). Rectangles and
+// boxes stand for the objects inside them, so their answers are conservative: occluded only when
+// no sample of any object inside them can pass.
+//
+// Thread safety: test_rects() and test_boxes() may run on many threads at once;
+// draw_occluders(), test_triangles() and clear() need the buffer to themselves.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "edgewise/camera.hpp"
+#include "edgewise/coverage.hpp"
+#include "edgewise/draw.hpp"
+#include "edgewise/framebuffer.hpp"
+#include "edgewise/isa.hpp"
+#include "edgewise/names.hpp"
+#include "edgewise/threads.hpp"
+#include "edgewise/vector.hpp"
+
+namespace edgewise {
+
+enum class Visibility : std::uint8_t {
+  visible,   // some sample may pass the depth test
+  occluded,  // no sample can pass
+  outside,   // no sample of the view is covered
+};
+
+// Triangles for the buffer: occluders, or an object to test. Spans are read during the call.
+struct OcclusionMesh {
+  std::span<const Vec3> positions;
+  std::span<const std::uint32_t> indices;  // three per triangle; empty: vertices 3t .. 3t + 2
+};
+
+struct OcclusionOptions {
+  Mat4 transform = identity();     // object space to clip space
+  CullMode cull = CullMode::none;  // winding on screen (y down), as coverage.hpp defines it
+  std::optional<Isa> isa;          // default: active_isa()
+  std::size_t threads = 0;         // as DrawOptions::threads
+  TaskExecutor executor;           // as DrawOptions::executor
+};
+
+// What an object covers on screen: at most the samples whose centres (i + 0.5, j + 0.5) lie in
+// the closed rectangle [x0, x1] x [y0, y1] (pixels, y down), none of them at a depth below
+// `depth` (z/w as draw() computes it per sample). Coordinates may be infinite.
+struct OcclusionRect {
+  float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
+  float depth = 0.0f;
+};
+
+// The box [min, max] of object space (min <= max on each axis, finite).
+struct OcclusionBox {
+  Vec3 min, max;
+};
+
+class OcclusionBuffer {
+ public:
+  // Sides 1 .. kMaxTargetSize (coverage.hpp); throws std::invalid_argument otherwise.
+  OcclusionBuffer(std::int32_t width, std::int32_t height);
+
+  std::int32_t width() const { return depth_.width(); }
+  std::int32_t height() const { return depth_.height(); }
+
+  // Every depth to 1: nothing is occluded.
+  void clear();
+
+  // The mesh drawn depth-only, depth test less with writes; the report is draw()'s. Throws as
+  // draw() does for inconsistent spans or options.
+  DrawReport draw_occluders(const OcclusionMesh& mesh, const OcclusionOptions& options);
+
+  // Exact: visible when draw() of the mesh with depth test less would pass a sample, outside when
+  // it would cover none, occluded otherwise. The depths are left unchanged.
+  Visibility test_triangles(const OcclusionMesh& mesh, const OcclusionOptions& options);
+
+  // One answer per rectangle: outside when it holds no pixel centre of the view or its depth
+  // lies beyond 1, occluded when its depth is at least every stored depth of the samples it
+  // holds, else visible. Throws std::invalid_argument, naming the rectangle, for a NaN, an
+  // inverted rectangle (x0 > x1 or y0 > y1) or out.size() != rects.size().
+  void test_rects(std::span<const OcclusionRect> rects, std::span<Visibility> out,
+                  std::optional<Isa> isa = std::nullopt) const;
+
+  // One answer per box, under `transform` (object space to clip space): outside when all its
+  // corners lie beyond one plane of the view volume; occluded when none of the samples its faces
+  // would cover could pass, judged from their screen box and a lower bound on the depths the
+  // depth formula gives them (docs/design/occlusion.md); visible otherwise, and visible for a
+  // box with a corner in front of the near plane or outside the guard band (one that draw()
+  // would clip), whose bounds cannot be found from its corners. Throws std::invalid_argument,
+  // naming the box, for a non-finite or inverted box, or out.size() != boxes.size().
+  void test_boxes(std::span<const OcclusionBox> boxes, const Mat4& transform,
+                  std::span<Visibility> out, std::optional<Isa> isa = std::nullopt) const;
+
+  // The stored depth of pixel (x, y) (unchecked), and every depth row-major (as
+  // Framebuffer::read_depth()).
+  float depth(std::int32_t x, std::int32_t y) const { return depth_.depth(x, y); }
+  void read_depth(std::span<float> depth) const { depth_.read_depth(depth); }
+
+ private:
+  void rebuild_tile_bounds(const OcclusionOptions& options);
+
+  // The depth target; its colour is not read (draw() writes one constant colour into it).
+  Framebuffer depth_;
+  // The largest depth of each 8x8 tile, exact: rebuilt after every change of the depths.
+  std::vector<float> tile_max_;
+};
+
+// Names of the values (names.hpp).
+std::string_view name_of(Visibility value);
+template <>
+std::span<const Visibility> values_of<Visibility>();
+
+}  // namespace edgewise

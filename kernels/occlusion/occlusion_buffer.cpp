@@ -1,0 +1,147 @@
+// OcclusionBuffer (occlusion.hpp): occluders and exact triangle queries through draw(), the
+// rectangle and box queries through the occlusion kernels.
+#include "edgewise/occlusion.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "../core/framebuffer_access.hpp"
+#include "../core/kernel_table.hpp"
+#include "../core/parallel.hpp"
+#include "query_bounds.hpp"
+
+namespace edgewise {
+namespace {
+
+// draw() as the occlusion buffer uses it: depth test less, one colour (no colours given, so the
+// kernels' uniform-colour path with no colour planes).
+DrawOptions depth_only(const OcclusionOptions& options, bool depth_write) {
+  DrawOptions draw_options;
+  draw_options.transform = options.transform;
+  draw_options.cull = options.cull;
+  draw_options.depth_test = DepthTest::less;
+  draw_options.depth_write = depth_write;
+  draw_options.shading = Shading::gouraud;
+  draw_options.isa = options.isa;
+  draw_options.threads = options.threads;
+  draw_options.executor = options.executor;
+  return draw_options;
+}
+
+DrawMesh draw_mesh(const OcclusionMesh& mesh) {
+  DrawMesh out;
+  out.positions = mesh.positions;
+  out.indices = mesh.indices;
+  return out;
+}
+
+void check_answers(std::size_t queries, std::size_t answers, const char* caller) {
+  if (queries != answers) {
+    throw std::invalid_argument(std::string(caller) + ": " + std::to_string(answers) +
+                                " answers for " + std::to_string(queries) + " queries");
+  }
+}
+
+// Tiles per task when the maxima are rebuilt on several threads: large enough that a task's
+// start costs little beside its 64 KiB of depths per 256 tiles.
+constexpr std::size_t kTilesPerTask = 4096;
+
+}  // namespace
+
+OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height) : depth_(width, height) {
+  if (width < 1 || height < 1) {
+    throw std::invalid_argument("OcclusionBuffer: size " + std::to_string(width) + "x" +
+                                std::to_string(height) + " has no pixel");
+  }
+  tile_max_.resize(static_cast<std::size_t>(depth_.tiles_x()) * depth_.tiles_y());
+  clear();
+}
+
+void OcclusionBuffer::clear() {
+  depth_.clear(Vec4{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f);
+  std::fill(tile_max_.begin(), tile_max_.end(), 1.0f);
+}
+
+DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
+                                           const OcclusionOptions& options) {
+  const DrawReport report = draw(depth_, draw_mesh(mesh), depth_only(options, true));
+  rebuild_tile_bounds(options);
+  return report;
+}
+
+Visibility OcclusionBuffer::test_triangles(const OcclusionMesh& mesh,
+                                           const OcclusionOptions& options) {
+  const DrawReport report = draw(depth_, draw_mesh(mesh), depth_only(options, false));
+  if (report.fragments == 0) return Visibility::outside;
+  return report.fragments_passed > 0 ? Visibility::visible : Visibility::occluded;
+}
+
+void OcclusionBuffer::rebuild_tile_bounds(const OcclusionOptions& options) {
+  const detail::KernelTable& kernels = detail::kernel_table(resolve_isa(options.isa));
+  const detail::Workers workers =
+      detail::resolve_workers(options.threads, options.executor, "draw_occluders");
+  const float* tiles = depth_.depth_tiles();
+  const std::size_t count = tile_max_.size();
+  const std::size_t tasks = std::min(workers.threads, (count + kTilesPerTask - 1) / kTilesPerTask);
+  if (tasks <= 1) {
+    kernels.occlusion_tile_maxima(tiles, 0, count, tile_max_.data());
+    return;
+  }
+  workers.run(tasks, [&](std::size_t task) {
+    kernels.occlusion_tile_maxima(tiles, count * task / tasks, count * (task + 1) / tasks,
+                                  tile_max_.data());
+  });
+}
+
+void OcclusionBuffer::test_rects(std::span<const OcclusionRect> rects, std::span<Visibility> out,
+                                 std::optional<Isa> isa) const {
+  check_answers(rects.size(), out.size(), "test_rects");
+  std::vector<detail::SampleRect> samples(rects.size());
+  for (std::size_t i = 0; i < rects.size(); ++i)
+    samples[i] = detail::rect_samples(rects[i], width(), height(), i);
+  const detail::OcclusionDepth depth{depth_.depth_tiles(), tile_max_.data(), depth_.tiles_x()};
+  detail::kernel_table(resolve_isa(isa))
+      .test_sample_rects(depth, samples.data(), samples.size(), out.data());
+}
+
+void OcclusionBuffer::test_boxes(std::span<const OcclusionBox> boxes, const Mat4& transform,
+                                 std::span<Visibility> out, std::optional<Isa> isa) const {
+  check_answers(boxes.size(), out.size(), "test_boxes");
+  const Viewport viewport{width(), height()};
+  const GuardBandPlanes planes = guard_band_planes(viewport);
+  std::vector<detail::SampleRect> samples(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const detail::BoxSamples box = detail::box_samples(boxes[i], transform, viewport, planes, i);
+    samples[i] = box.samples;  // empty, so outside, unless bounded
+    if (box.reach == detail::BoxReach::unbounded) {
+      // A range whose depth nothing lies at or below: visible wherever it reaches the view.
+      samples[i] = {0, 0, width() - 1, height() - 1, -1.0f};
+    }
+  }
+  const detail::OcclusionDepth depth{depth_.depth_tiles(), tile_max_.data(), depth_.tiles_x()};
+  detail::kernel_table(resolve_isa(isa))
+      .test_sample_rects(depth, samples.data(), samples.size(), out.data());
+}
+
+std::string_view name_of(Visibility value) {
+  switch (value) {
+    case Visibility::visible:
+      return "visible";
+    case Visibility::occluded:
+      return "occluded";
+    case Visibility::outside:
+      return "outside";
+  }
+  return "unknown";
+}
+
+template <>
+std::span<const Visibility> values_of<Visibility>() {
+  static constexpr Visibility kValues[] = {Visibility::visible, Visibility::occluded,
+                                           Visibility::outside};
+  return kValues;
+}
+
+}  // namespace edgewise

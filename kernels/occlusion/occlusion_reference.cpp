@@ -1,0 +1,34 @@
+// The occlusion kernels' reference: every sample of a rectangle read and compared, one at a time.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+#include "../core/reference_kernels.hpp"
+
+namespace edgewise::reference {
+
+void test_sample_rects(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,
+                       std::size_t count, Visibility* out) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const detail::SampleRect& r = rects[i];
+    Visibility answer = r.x0 > r.x1 || r.y0 > r.y1 ? Visibility::outside : Visibility::occluded;
+    for (std::int32_t y = r.y0; y <= r.y1 && answer == Visibility::occluded; ++y) {
+      for (std::int32_t x = r.x0; x <= r.x1; ++x) {
+        const std::size_t tile = static_cast<std::size_t>(y / 8) * depth.tiles_x + x / 8;
+        // Passes the depth test less somewhere: the stored depth lies above the rectangle's.
+        if (depth.tiles[tile * 64 + (y % 8) * 8 + x % 8] > r.depth) {
+          answer = Visibility::visible;
+          break;
+        }
+      }
+    }
+    out[i] = answer;
+  }
+}
+
+void occlusion_tile_maxima(const float* tiles, std::size_t first, std::size_t last, float* out) {
+  for (std::size_t t = first; t < last; ++t)
+    out[t] = *std::max_element(tiles + t * 64, tiles + t * 64 + 64);
+}
+
+}  // namespace edgewise::reference

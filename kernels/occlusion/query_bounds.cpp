@@ -1,0 +1,152 @@
+// Rectangles and boxes to ranges of samples and a depth bound (docs/design/occlusion.md,
+// "Queries").
+#include "query_bounds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "../draw/shading/depth_plane.hpp"
+#include "../draw/vertex_stage/vertex_stage.hpp"
+
+namespace edgewise::detail {
+namespace {
+
+// The sample indices whose centres i + 0.5 lie in [low, high], clamped to 0 .. size - 1 (in
+// double: a float bound may be infinite or beyond the int32 range).
+void sample_range(double low, double high, std::int32_t size, std::int32_t& first,
+                  std::int32_t& last) {
+  const double from = std::ceil(low - 0.5), to = std::floor(high - 0.5);
+  first = static_cast<std::int32_t>(std::clamp(from, 0.0, static_cast<double>(size)));
+  last = static_cast<std::int32_t>(std::clamp(to, -1.0, static_cast<double>(size - 1)));
+}
+
+// The largest float not above `value`.
+float float_below(double value) {
+  float f = static_cast<float>(value);
+  if (static_cast<double>(f) > value)
+    f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+
+// Corner k of the box: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+Vec3 corner(const OcclusionBox& box, int k) {
+  return {(k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
+          (k & 4) ? box.max.z : box.min.z};
+}
+
+// The six faces as quads of corners, in order around each.
+constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                              {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+
+// The largest |dz/dx| and |dz/dy| of every triangle a face can be cut into (both diagonals),
+// as the depth formula's set-up rounds them (make_depth_plane()).
+void steepest_slopes(const Vec2 (&p)[8], const float (&z)[8], double& sx, double& sy) {
+  sx = 0.0;
+  sy = 0.0;
+  for (const auto& face : kFaces) {
+    for (int skip = 0; skip < 4; ++skip) {
+      Vec2 tp[3];
+      float tz[3];
+      for (int i = 0, n = 0; i < 4; ++i) {
+        if (i == skip) continue;
+        tp[n] = p[face[i]];
+        tz[n] = z[face[i]];
+        ++n;
+      }
+      const DepthPlane plane = make_depth_plane(tp, tz);
+      sx = std::max(sx, std::fabs(static_cast<double>(plane.dzdx)));
+      sy = std::max(sy, std::fabs(static_cast<double>(plane.dzdy)));
+    }
+  }
+}
+
+}  // namespace
+
+SampleRect rect_samples(const OcclusionRect& rect, std::int32_t width, std::int32_t height,
+                        std::size_t index) {
+  const auto fail = [&](const char* why) {
+    throw std::invalid_argument("test_rects: rectangle " + std::to_string(index) + " " + why);
+  };
+  if (std::isnan(rect.x0) || std::isnan(rect.y0) || std::isnan(rect.x1) || std::isnan(rect.y1) ||
+      std::isnan(rect.depth)) {
+    fail("has a NaN coordinate or depth");
+  }
+  if (rect.x0 > rect.x1 || rect.y0 > rect.y1) fail("is inverted (x0 > x1 or y0 > y1)");
+  SampleRect out;
+  if (rect.depth > 1.0f) return out;  // beyond the far plane: nothing drawn
+  sample_range(rect.x0, rect.x1, width, out.x0, out.x1);
+  sample_range(rect.y0, rect.y1, height, out.y0, out.y1);
+  out.depth = rect.depth;
+  return out;
+}
+
+// A face's sample at depth formula value v = (z0 + dzdy dy) + dzdx dx, every operation rounded
+// to float (depth_plane.hpp), lies within about 4 u M of the plane through the snapped corners,
+// M = |z0| + |dzdy| |dy| + |dzdx| |dx| and u = 2^-24: one rounding per operation (3 u M) and the
+// slopes' own rounding to float (u each term). On a sample inside the triangle the plane is a
+// mean of the corners' depths, so no less than the smallest. So every sample a face covers gets at
+// least min z - 8 u M, with |z0| <= 1 (depths are clamped to [0, 1]) and |dx|, |dy| at most the
+// box's screen extent (a covered sample and the first corner both lie in it); clamping only
+// raises a value. The steepest slopes of all 24 triangles the faces can be cut into make the
+// bound hold for every triangulation and vertex order of the faces.
+BoxSamples box_samples(const OcclusionBox& box, const Mat4& to_clip, const Viewport& viewport,
+                       const GuardBandPlanes& planes, std::size_t index) {
+  const float coordinates[6] = {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z};
+  for (const float c : coordinates) {
+    if (!std::isfinite(c)) {
+      throw std::invalid_argument("test_boxes: box " + std::to_string(index) +
+                                  " has a non-finite coordinate");
+    }
+  }
+  if (box.min.x > box.max.x || box.min.y > box.max.y || box.min.z > box.max.z) {
+    throw std::invalid_argument("test_boxes: box " + std::to_string(index) +
+                                " is inverted (min > max on an axis)");
+  }
+  BoxSamples out;
+  Vec4 clip[8];
+  std::uint16_t outside_all = 0xFFFF;
+  bool all_checked = true, all_inside = true;
+  for (int k = 0; k < 8; ++k) {
+    clip[k] = transform(to_clip, corner(box, k));
+    const ClipClass c = classify_clip_vertex(clip[k], planes);
+    outside_all &= c.outside_frustum;
+    all_checked = all_checked && c.checked;
+    all_inside = all_inside && c.inside;
+  }
+  if (all_checked && outside_all != 0) {
+    out.reach = BoxReach::outside;
+    return out;
+  }
+  if (!all_inside) return out;  // unbounded
+  Vec2 p[8];
+  float z[8];
+  float min_x = std::numeric_limits<float>::infinity(), max_x = -min_x;
+  float min_y = min_x, max_y = -min_x, min_z = min_x;
+  for (int k = 0; k < 8; ++k) {
+    const ScreenVertex s = to_screen(clip[k], viewport);
+    p[k] = {snap(s.x), snap(s.y)};
+    z[k] = s.z;
+    min_x = std::min(min_x, p[k].x);
+    max_x = std::max(max_x, p[k].x);
+    min_y = std::min(min_y, p[k].y);
+    max_y = std::max(max_y, p[k].y);
+    min_z = std::min(min_z, z[k]);
+  }
+  double sx, sy;
+  steepest_slopes(p, z, sx, sy);
+  const double reach =
+      1.0 + sx * (static_cast<double>(max_x) - min_x) + sy * (static_cast<double>(max_y) - min_y);
+  const double lowest = static_cast<double>(min_z) - 8.0 * 0x1p-24 * reach;
+  out.reach = BoxReach::bounded;
+  sample_range(min_x, max_x, viewport.width, out.samples.x0, out.samples.x1);
+  sample_range(min_y, max_y, viewport.height, out.samples.y0, out.samples.y1);
+  out.samples.depth = lowest > 0.0 ? float_below(lowest) : 0.0f;
+  if (out.samples.x0 > out.samples.x1 || out.samples.y0 > out.samples.y1)
+    out.reach = BoxReach::outside;
+  return out;
+}
+
+}  // namespace edgewise::detail
