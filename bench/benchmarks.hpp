@@ -49,6 +49,10 @@ void register_draw_peer_benchmarks();
 // Culling's fill-rate protocol; RectQueries/<isa>: test_rects() against a screen of occluders.
 void register_occlusion_benchmarks();
 
+// City/<isa>/<whole|culled>: the procedural city drawn whole and with occlusion culling, when
+// built with the procedural scenes.
+void register_city_benchmarks();
+
 // OccluderPeer/moc/... and RectQueryPeer/moc/...: Masked Occlusion Culling on the same workloads,
 // when built against it (EDGEWISE_MOC_DIR, bench/README.md).
 void register_moc_peer_benchmarks();

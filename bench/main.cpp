@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
 #endif
 #if defined(EDGEWISE_BENCH_MESHES)
   edgewise::bench::register_mesh_draw_benchmarks();
+  edgewise::bench::register_city_benchmarks();
 #endif
 #if defined(EDGEWISE_BENCH_BUDGET)
   edgewise::bench::register_budget_draw_benchmarks();

@@ -3,9 +3,10 @@
 #include "edgewise/occlusion.hpp"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "../core/framebuffer_access.hpp"
 #include "../core/kernel_table.hpp"
@@ -44,6 +45,9 @@ void check_answers(std::size_t queries, std::size_t answers, const char* caller)
   }
 }
 
+// Queries turned into sample ranges at a time: on the stack, and few enough to stay in L1.
+constexpr std::size_t kQueriesPerChunk = 256;
+
 // Tiles per task when the maxima are rebuilt on several threads: large enough that a task's
 // start costs little beside its 64 KiB of depths per 256 tiles.
 constexpr std::size_t kTilesPerTask = 4096;
@@ -55,13 +59,15 @@ OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height) : dept
     throw std::invalid_argument("OcclusionBuffer: size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " has no pixel");
   }
-  tile_max_.resize(static_cast<std::size_t>(depth_.tiles_x()) * depth_.tiles_y());
+  tile_max_.assign(
+      static_cast<std::size_t>(depth_.tiles_x()) * depth_.tiles_y() + detail::kTileMaximaPadding,
+      -std::numeric_limits<float>::infinity());
   clear();
 }
 
 void OcclusionBuffer::clear() {
   depth_.clear(Vec4{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f);
-  std::fill(tile_max_.begin(), tile_max_.end(), 1.0f);
+  std::fill(tile_max_.begin(), tile_max_.end() - detail::kTileMaximaPadding, 1.0f);
 }
 
 DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
@@ -69,6 +75,23 @@ DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
   const DrawReport report = draw(depth_, draw_mesh(mesh), depth_only(options, true));
   rebuild_tile_bounds(options);
   return report;
+}
+
+void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOptions& options) {
+  if (frame.width() != width() || frame.height() != height()) {
+    throw std::invalid_argument("copy_depth: a " + std::to_string(frame.width()) + "x" +
+                                std::to_string(frame.height()) + " frame for a " +
+                                std::to_string(width()) + "x" + std::to_string(height()) +
+                                " occlusion buffer");
+  }
+  // Same tiles, same layout: sample 0 of each tile is its first 64 values.
+  const std::size_t tiles = tile_max_.size() - detail::kTileMaximaPadding;
+  const float* from = frame.depth_tiles();
+  float* to = depth_.depth_tiles();
+  const std::size_t stride = 64 * static_cast<std::size_t>(frame.samples());
+  for (std::size_t t = 0; t < tiles; ++t)
+    std::copy_n(from + t * stride, 64, to + t * 64);
+  rebuild_tile_bounds(options);
 }
 
 Visibility OcclusionBuffer::test_triangles(const OcclusionMesh& mesh,
@@ -83,7 +106,7 @@ void OcclusionBuffer::rebuild_tile_bounds(const OcclusionOptions& options) {
   const detail::Workers workers =
       detail::resolve_workers(options.threads, options.executor, "draw_occluders");
   const float* tiles = depth_.depth_tiles();
-  const std::size_t count = tile_max_.size();
+  const std::size_t count = tile_max_.size() - detail::kTileMaximaPadding;
   const std::size_t tasks = std::min(workers.threads, (count + kTilesPerTask - 1) / kTilesPerTask);
   if (tasks <= 1) {
     kernels.occlusion_tile_maxima(tiles, 0, count, tile_max_.data());
@@ -98,31 +121,38 @@ void OcclusionBuffer::rebuild_tile_bounds(const OcclusionOptions& options) {
 void OcclusionBuffer::test_rects(std::span<const OcclusionRect> rects, std::span<Visibility> out,
                                  std::optional<Isa> isa) const {
   check_answers(rects.size(), out.size(), "test_rects");
-  std::vector<detail::SampleRect> samples(rects.size());
-  for (std::size_t i = 0; i < rects.size(); ++i)
-    samples[i] = detail::rect_samples(rects[i], width(), height(), i);
+  const detail::KernelTable& kernels = detail::kernel_table(resolve_isa(isa));
   const detail::OcclusionDepth depth{depth_.depth_tiles(), tile_max_.data(), depth_.tiles_x()};
-  detail::kernel_table(resolve_isa(isa))
-      .test_sample_rects(depth, samples.data(), samples.size(), out.data());
+  std::array<detail::SampleRect, kQueriesPerChunk> samples;
+  for (std::size_t first = 0; first < rects.size(); first += kQueriesPerChunk) {
+    const std::size_t count = std::min(kQueriesPerChunk, rects.size() - first);
+    for (std::size_t i = 0; i < count; ++i)
+      samples[i] = detail::rect_samples(rects[first + i], width(), height(), first + i);
+    kernels.test_sample_rects(depth, samples.data(), count, out.data() + first);
+  }
 }
 
 void OcclusionBuffer::test_boxes(std::span<const OcclusionBox> boxes, const Mat4& transform,
                                  std::span<Visibility> out, std::optional<Isa> isa) const {
   check_answers(boxes.size(), out.size(), "test_boxes");
+  const detail::KernelTable& kernels = detail::kernel_table(resolve_isa(isa));
+  const detail::OcclusionDepth depth{depth_.depth_tiles(), tile_max_.data(), depth_.tiles_x()};
   const Viewport viewport{width(), height()};
   const GuardBandPlanes planes = guard_band_planes(viewport);
-  std::vector<detail::SampleRect> samples(boxes.size());
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
-    const detail::BoxSamples box = detail::box_samples(boxes[i], transform, viewport, planes, i);
-    samples[i] = box.samples;  // empty, so outside, unless bounded
-    if (box.reach == detail::BoxReach::unbounded) {
-      // A range whose depth nothing lies at or below: visible wherever it reaches the view.
-      samples[i] = {0, 0, width() - 1, height() - 1, -1.0f};
+  std::array<detail::SampleRect, kQueriesPerChunk> samples;
+  for (std::size_t first = 0; first < boxes.size(); first += kQueriesPerChunk) {
+    const std::size_t count = std::min(kQueriesPerChunk, boxes.size() - first);
+    for (std::size_t i = 0; i < count; ++i) {
+      const detail::BoxSamples box =
+          detail::box_samples(boxes[first + i], transform, viewport, planes, first + i);
+      samples[i] = box.samples;  // empty, so outside, unless bounded
+      if (box.reach == detail::BoxReach::unbounded) {
+        // A range whose depth nothing lies at or below: visible wherever it reaches the view.
+        samples[i] = {0, 0, width() - 1, height() - 1, -1.0f};
+      }
     }
+    kernels.test_sample_rects(depth, samples.data(), count, out.data() + first);
   }
-  const detail::OcclusionDepth depth{depth_.depth_tiles(), tile_max_.data(), depth_.tiles_x()};
-  detail::kernel_table(resolve_isa(isa))
-      .test_sample_rects(depth, samples.data(), samples.size(), out.data());
 }
 
 std::string_view name_of(Visibility value) {

@@ -7,10 +7,14 @@
 
 namespace edgewise::detail {
 
+// Entries of OcclusionDepth::tile_max past the last tile, none above any depth (-inf): a kernel
+// may read that many past a row's end.
+inline constexpr std::int32_t kTileMaximaPadding = 16;
+
 // The depth of an OcclusionBuffer, in the Framebuffer's tiled layout (framebuffer.hpp).
 struct OcclusionDepth {
   const float* tiles = nullptr;     // 64 per 8x8 tile, row by row
-  const float* tile_max = nullptr;  // the largest of each tile's 64 depths
+  const float* tile_max = nullptr;  // the largest of each tile's 64 depths, then the padding
   std::int32_t tiles_x = 0;
 };
 

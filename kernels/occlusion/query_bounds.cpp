@@ -8,19 +8,23 @@
 #include <stdexcept>
 #include <string>
 
-#include "../draw/shading/depth_plane.hpp"
 #include "../draw/vertex_stage/vertex_stage.hpp"
 
 namespace edgewise::detail {
 namespace {
 
 // The sample indices whose centres i + 0.5 lie in [low, high], clamped to 0 .. size - 1 (in
-// double: a float bound may be infinite or beyond the int32 range).
+// double: a float bound may be infinite or beyond the int32 range). Clamped to integers first,
+// then rounded by a conversion: ceil and floor commute with clamping to integer bounds, and this
+// code is built for the baseline ISA, where std::ceil is a library call.
 void sample_range(double low, double high, std::int32_t size, std::int32_t& first,
                   std::int32_t& last) {
-  const double from = std::ceil(low - 0.5), to = std::floor(high - 0.5);
-  first = static_cast<std::int32_t>(std::clamp(from, 0.0, static_cast<double>(size)));
-  last = static_cast<std::int32_t>(std::clamp(to, -1.0, static_cast<double>(size - 1)));
+  const double from = std::clamp(low - 0.5, 0.0, static_cast<double>(size));
+  const double to = std::clamp(high - 0.5, -1.0, static_cast<double>(size - 1));
+  first = static_cast<std::int32_t>(from);  // toward zero: floor for from >= 0
+  if (static_cast<double>(first) < from) ++first;
+  last = static_cast<std::int32_t>(to);  // toward zero: ceil for to < 0
+  if (static_cast<double>(last) > to) --last;
 }
 
 // The largest float not above `value`.
@@ -41,24 +45,28 @@ Vec3 corner(const OcclusionBox& box, int k) {
 constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
                               {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
 
-// The largest |dz/dx| and |dz/dy| of every triangle a face can be cut into (both diagonals),
-// as the depth formula's set-up rounds them (make_depth_plane()).
+// The largest |dz/dx| and |dz/dy| of every triangle a face can be cut into (both diagonals), from
+// the snapped corners as make_depth_plane() takes them, with one reciprocal per triangle in place
+// of its two divisions: within a few 2^-53 of the set-up's values before they are rounded to
+// float, well inside the margin's factor of two.
 void steepest_slopes(const Vec2 (&p)[8], const float (&z)[8], double& sx, double& sy) {
   sx = 0.0;
   sy = 0.0;
   for (const auto& face : kFaces) {
     for (int skip = 0; skip < 4; ++skip) {
-      Vec2 tp[3];
-      float tz[3];
-      for (int i = 0, n = 0; i < 4; ++i) {
-        if (i == skip) continue;
-        tp[n] = p[face[i]];
-        tz[n] = z[face[i]];
-        ++n;
-      }
-      const DepthPlane plane = make_depth_plane(tp, tz);
-      sx = std::max(sx, std::fabs(static_cast<double>(plane.dzdx)));
-      sy = std::max(sy, std::fabs(static_cast<double>(plane.dzdy)));
+      const int a = face[skip == 0 ? 1 : 0];
+      const int b = face[skip <= 1 ? 2 : 1];
+      const int c = face[skip <= 2 ? 3 : 2];
+      const double x1 = static_cast<double>(p[b].x) - p[a].x,
+                   y1 = static_cast<double>(p[b].y) - p[a].y;
+      const double x2 = static_cast<double>(p[c].x) - p[a].x,
+                   y2 = static_cast<double>(p[c].y) - p[a].y;
+      const double z1 = static_cast<double>(z[b]) - z[a], z2 = static_cast<double>(z[c]) - z[a];
+      const double area = x1 * y2 - y1 * x2;
+      if (area == 0.0) continue;  // covers nothing
+      const double inverse = 1.0 / std::fabs(area);
+      sx = std::max(sx, std::fabs(z1 * y2 - z2 * y1) * inverse);
+      sy = std::max(sy, std::fabs(z2 * x1 - z1 * x2) * inverse);
     }
   }
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 
@@ -27,7 +28,8 @@ inline std::uint64_t rect_tile_mask(const detail::SampleRect& r, std::int32_t tx
   return columns * 0x0101010101010101ull & rows;
 }
 
-// Bit i of the result: depth i of the tile lies above `limit`.
+// Bit i of the result: depth i of the tile lies above `limit`. No branch: the tile's 64 depths
+// are compared whatever part of it the rectangle holds.
 template <class Arch>
 [[gnu::always_inline]] inline std::uint64_t depths_above(const float* tile, float limit) {
   using Floats = xsimd::batch<float, Arch>;
@@ -41,17 +43,33 @@ template <class Arch>
   return above;
 }
 
-// Visible when some sample of the rectangle holds a depth above the rectangle's: tiles whose
-// maximum lies at or below it are passed over whole, the others compared sample by sample.
+// Visible when some sample of the rectangle holds a depth above the rectangle's. A tile row's
+// maxima are compared a batch of tiles at a time, and only the tiles whose maximum lies above the
+// depth are looked into: a tile wholly inside the rectangle is then visible at once (its maximum
+// is one of the rectangle's samples), the others are compared sample by sample. The maxima array
+// holds kTileMaximaPadding entries past its last tile, so that a batch may read past a row's end.
 template <class Arch>
 Visibility test_rect(const detail::OcclusionDepth& depth, const detail::SampleRect& r) {
+  using Floats = xsimd::batch<float, Arch>;
+  constexpr std::int32_t kLanes = static_cast<std::int32_t>(Floats::size);
+  static_assert(kLanes <= detail::kTileMaximaPadding);
   if (r.x0 > r.x1 || r.y0 > r.y1) return Visibility::outside;
+  const Floats limit(r.depth);
+  const std::int32_t tx0 = r.x0 >> 3, tx1 = r.x1 >> 3;
   for (std::int32_t ty = r.y0 >> 3; ty <= r.y1 >> 3; ++ty) {
-    for (std::int32_t tx = r.x0 >> 3; tx <= r.x1 >> 3; ++tx) {
-      const std::size_t tile = static_cast<std::size_t>(ty) * depth.tiles_x + tx;
-      if (!(depth.tile_max[tile] > r.depth)) continue;
-      if ((depths_above<Arch>(depth.tiles + tile * 64, r.depth) & rect_tile_mask(r, tx, ty)) != 0)
-        return Visibility::visible;
+    const bool rows_whole = r.y0 <= ty * 8 && r.y1 >= ty * 8 + 7;
+    const float* row = depth.tile_max + static_cast<std::size_t>(ty) * depth.tiles_x;
+    for (std::int32_t tx = tx0; tx <= tx1; tx += kLanes) {
+      const std::int32_t lanes = std::min(kLanes, tx1 - tx + 1);
+      std::uint32_t above = bits_of_lanes<Arch>(Floats::load_unaligned(row + tx) > limit) &
+                            ((2u << (lanes - 1)) - 1u);
+      for (; above != 0; above &= above - 1) {
+        const std::int32_t t = tx + std::countr_zero(above);
+        if (rows_whole && r.x0 <= t * 8 && r.x1 >= t * 8 + 7) return Visibility::visible;
+        const std::size_t tile = static_cast<std::size_t>(ty) * depth.tiles_x + t;
+        if ((depths_above<Arch>(depth.tiles + tile * 64, r.depth) & rect_tile_mask(r, t, ty)) != 0)
+          return Visibility::visible;
+      }
     }
   }
   return Visibility::occluded;

@@ -193,6 +193,17 @@ def render_to_full_standard_output(d):
 
 
 @case
+def city_to_full_disk(d):
+    out = symlink("/dev/full", f"{d}/city.png")
+    return Case("edgewise-city", ["--blocks", "2", "--frames", "1", "-o", out], 1, [out, FULL])
+
+
+@case
+def city_width_out_of_range(d):
+    return Case("edgewise-city", ["--width", "0"], 2, ["--width"])
+
+
+@case
 def strokes_to_full_disk(d):
     out = symlink("/dev/full", f"{d}/strokes.png")
     return Case("edgewise-strokes", ["-o", out], 1, [out, FULL])

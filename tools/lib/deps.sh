@@ -37,8 +37,8 @@ EDGEWISE_ATLAS_PACKAGES=(
   python3-matplotlib # draws the atlas's charts (tools/atlas/plot_atlas.py)
 )
 
-# tools/demo: the tools' build, edgewise-render, edgewise-strokes and edgewise-demo, and last the
-# method atlas's quick run (tools/edgewise-atlas, which installs the same list).
+# tools/demo: the tools' build, edgewise-render, edgewise-city, edgewise-strokes and edgewise-demo,
+# and last the method atlas's quick run (tools/edgewise-atlas, which installs the same list).
 EDGEWISE_DEMO_PACKAGES=("${EDGEWISE_ATLAS_PACKAGES[@]}")
 
 # tools/check, stage by stage.

@@ -85,6 +85,11 @@ class OcclusionBuffer {
   // draw() does for inconsistent spans or options.
   DrawReport draw_occluders(const OcclusionMesh& mesh, const OcclusionOptions& options);
 
+  // The depth of a frame already drawn (its sample 0 when multisampled) in place of the buffer's:
+  // occluders drawn as the first objects of a frame, or by a depth pre-pass, serve as they are.
+  // Throws std::invalid_argument when the frame's size is not the buffer's.
+  void copy_depth(const Framebuffer& frame, const OcclusionOptions& options = {});
+
   // Exact: visible when draw() of the mesh with depth test less would pass a sample, outside when
   // it would cover none, occluded otherwise. The depths are left unchanged.
   Visibility test_triangles(const OcclusionMesh& mesh, const OcclusionOptions& options);
