@@ -2,6 +2,7 @@
 // rules give, bad input is refused by name.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
