@@ -84,13 +84,13 @@ void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOption
                                 std::to_string(width()) + "x" + std::to_string(height()) +
                                 " occlusion buffer");
   }
-  // Same tiles, same layout: sample 0 of each tile is its first 64 values.
-  const std::size_t tiles = tile_max_.size() - detail::kTileMaximaPadding;
-  const float* from = frame.depth_tiles();
-  float* to = depth_.depth_tiles();
-  const std::size_t stride = 64 * static_cast<std::size_t>(frame.samples());
-  for (std::size_t t = 0; t < tiles; ++t)
-    std::copy_n(from + t * stride, 64, to + t * 64);
+  if (frame.samples() != 1) {
+    throw std::invalid_argument("copy_depth: a frame of " + std::to_string(frame.samples()) +
+                                " samples per pixel; queries answer for one sample per pixel");
+  }
+  // Same tiles, same layout.
+  const std::size_t values = (tile_max_.size() - detail::kTileMaximaPadding) * 64;
+  std::copy_n(frame.depth_tiles(), values, depth_.depth_tiles());
   rebuild_tile_bounds(options);
 }
 

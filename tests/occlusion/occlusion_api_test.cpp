@@ -57,6 +57,30 @@ TEST_P(OcclusionApi, DepthIsDrawsBitForBitOnEveryThreadCount) {
   }
 }
 
+TEST_P(OcclusionApi, CopiedDepthAnswersAsDrawnOccluders) {
+  Random random(11);
+  const OccluderSoup soup = random_occluders(random, 200);
+  OcclusionBuffer drawn(kWidth, kHeight), copied(kWidth, kHeight);
+  drawn.draw_occluders(soup.mesh(), options());
+  Framebuffer frame(kWidth, kHeight);
+  frame.clear({0.0f, 0.0f, 0.0f, 1.0f}, 1.0f);
+  DrawOptions draw_options;
+  draw_options.isa = isa();
+  draw(frame, {soup.positions, {}, {}, {}}, draw_options);
+  copied.copy_depth(frame, options());
+  std::vector<float> want(static_cast<std::size_t>(kWidth) * kHeight), got(want.size());
+  drawn.read_depth(want);
+  copied.read_depth(got);
+  EXPECT_EQ(want, got);
+  const std::vector<OcclusionRect> rects = random_rects(random, 2000, kWidth, kHeight);
+  std::vector<Visibility> from_drawn(rects.size()), from_copied(rects.size());
+  drawn.test_rects(rects, from_drawn, isa());
+  copied.test_rects(rects, from_copied, isa());
+  EXPECT_EQ(from_drawn, from_copied);
+  EXPECT_THROW(copied.copy_depth(Framebuffer(kWidth + 1, kHeight)), std::invalid_argument);
+  EXPECT_THROW(copied.copy_depth(Framebuffer(kWidth, kHeight, 4)), std::invalid_argument);
+}
+
 TEST_P(OcclusionApi, RectanglesAgainstAWall) {
   OcclusionBuffer buffer(kWidth, kHeight);
   const std::vector<OcclusionRect> rects = {

@@ -81,13 +81,14 @@ class OcclusionBuffer {
   // Every depth to 1: nothing is occluded.
   void clear();
 
-  // The mesh drawn depth-only, depth test less with writes; the report is draw()'s. Throws as
+  // The mesh drawn as occluders: depth test less with writes; the report is draw()'s. Throws as
   // draw() does for inconsistent spans or options.
   DrawReport draw_occluders(const OcclusionMesh& mesh, const OcclusionOptions& options);
 
-  // The depth of a frame already drawn (its sample 0 when multisampled) in place of the buffer's:
-  // occluders drawn as the first objects of a frame, or by a depth pre-pass, serve as they are.
-  // Throws std::invalid_argument when the frame's size is not the buffer's.
+  // The depth of a frame already drawn in place of the buffer's: occluders drawn as the first
+  // objects of a frame, or by a depth pre-pass, serve as they are. Throws std::invalid_argument
+  // when the frame's size is not the buffer's, or when it is multisampled (a query answers for
+  // pixel centres, and an object may reach another sample of a pixel without its centre).
   void copy_depth(const Framebuffer& frame, const OcclusionOptions& options = {});
 
   // Exact: visible when draw() of the mesh with depth test less would pass a sample, outside when
@@ -119,7 +120,7 @@ class OcclusionBuffer {
  private:
   void rebuild_tile_bounds(const OcclusionOptions& options);
 
-  // The depth target; its colour is not read (draw() writes one constant colour into it).
+  // The depth target; its colour is never read (draw() writes one colour into it).
   Framebuffer depth_;
   // The largest depth of each 8x8 tile, exact: rebuilt after every change of the depths.
   std::vector<float> tile_max_;
