@@ -22,40 +22,49 @@ const scene::City& bench_city() {
   return city;
 }
 
-void city_frame(benchmark::State& state, Isa isa, bool culled) {
-  const scene::City& city = bench_city();
-  const Mat4 view = scene::city_view(city, static_cast<float>(kCityWidth) / kCityHeight);
+// What a frame of the city needs, for one ISA.
+struct CityRun {
+  explicit CityRun(Isa isa)
+      : city(bench_city()),
+        view(scene::city_view(city, static_cast<float>(kCityWidth) / kCityHeight)),
+        target(kCityWidth, kCityHeight),
+        occlusion(kCityWidth, kCityHeight) {
+    options.isa = isa;
+  }
+  scene::CityFrame culled_frame() {
+    return scene::draw_city_culled(target, occlusion, city, view, options, visible);
+  }
+
+  const scene::City& city;
+  Mat4 view;
   scene::CityFrameOptions options;
-  options.isa = isa;
-  Framebuffer target(kCityWidth, kCityHeight);
-  OcclusionBuffer occlusion(kCityWidth, kCityHeight);
+  Framebuffer target;
+  OcclusionBuffer occlusion;
   scene::Mesh visible;
+};
+
+void city_frame(benchmark::State& state, Isa isa, bool culled) {
+  CityRun run(isa);
   scene::CityFrame frame;
   for (auto _ : state) {
-    frame = culled ? scene::draw_city_culled(target, occlusion, city, view, options, visible)
-                   : scene::draw_city(target, city, view, options);
-    benchmark::DoNotOptimize(target.color_tiles());
+    frame =
+        culled ? run.culled_frame() : scene::draw_city(run.target, run.city, run.view, run.options);
+    benchmark::DoNotOptimize(run.target.color_tiles());
   }
   state.counters["objects_drawn"] = static_cast<double>(frame.objects_drawn);
-  state.counters["objects"] = static_cast<double>(city.objects.size());
+  state.counters["objects"] = static_cast<double>(run.city.objects.size());
 }
 
 // The culled frame's queries alone: every tree's box against the buildings' and ground's depth.
 void city_box_queries(benchmark::State& state, Isa isa) {
-  const scene::City& city = bench_city();
-  const Mat4 view = scene::city_view(city, static_cast<float>(kCityWidth) / kCityHeight);
-  scene::CityFrameOptions options;
-  options.isa = isa;
-  Framebuffer target(kCityWidth, kCityHeight);
-  OcclusionBuffer occlusion(kCityWidth, kCityHeight);
-  scene::Mesh visible;
-  scene::draw_city_culled(target, occlusion, city, view, options, visible);
+  CityRun run(isa);
+  run.culled_frame();
   std::vector<OcclusionBox> boxes;
-  for (std::size_t i = city.first_prop(); i < city.objects.size(); ++i)
-    boxes.push_back({city.objects[i].bounds.min, city.objects[i].bounds.max});
+  for (std::size_t i = run.city.first_prop(); i < run.city.objects.size(); ++i)
+    boxes.push_back({run.city.objects[i].bounds.min, run.city.objects[i].bounds.max});
   std::vector<Visibility> answers(boxes.size());
   for (auto _ : state) {
-    occlusion.test_boxes(boxes, view, answers, isa);
+    run.occlusion.test_boxes(boxes, run.view, answers, isa);
     benchmark::DoNotOptimize(answers.data());
   }
   state.counters["queries"] = benchmark::Counter(

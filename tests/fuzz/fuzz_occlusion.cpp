@@ -33,10 +33,12 @@
 #include <vector>
 
 #include "edgewise/edgewise.hpp"
+#include "occlusion/box_faces.hpp"
 
 namespace {
 
 using namespace edgewise;
+using test::box_faces;
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kSpecialValues[] = {0.0f,
@@ -117,22 +119,6 @@ Input decode(std::span<const std::uint8_t> bytes) {
     input.boxes.push_back({low, in.vec3()});
   }
   return input;
-}
-
-std::vector<Vec3> box_faces(const OcclusionBox& box) {
-  Vec3 c[8];
-  for (int k = 0; k < 8; ++k) {
-    c[k] = {(k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
-            (k & 4) ? box.max.z : box.min.z};
-  }
-  static constexpr int kQuads[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
-                                       {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
-  std::vector<Vec3> out;
-  for (const auto& q : kQuads) {
-    for (const int k : {q[0], q[1], q[2], q[0], q[2], q[3]})
-      out.push_back(c[k]);
-  }
-  return out;
 }
 
 // The brute force of a rectangle: its closed rectangle's samples read one by one; nullopt for a

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "edgewise/occlusion.hpp"
+#include "occlusion/box_faces.hpp"
 #include "random.hpp"
 
 namespace edgewise::test {
@@ -28,8 +29,5 @@ Mat4 random_camera(Random& random, float aspect);
 // Boxes around the origin of the camera's scene: small and large, flat and long, some crossing
 // the near plane or the view's sides.
 std::vector<OcclusionBox> random_boxes(Random& random, int count);
-
-// The twelve triangles of a box's faces (both diagonals' choice fixed), as draw() takes them.
-std::vector<Vec3> box_faces(const OcclusionBox& box);
 
 }  // namespace edgewise::test
