@@ -11,19 +11,10 @@
 namespace edgewise::bench {
 namespace {
 
-// A fixed generator, so the triangles are the same on every machine.
-struct Lcg {
-  std::uint64_t state;
-  double uniform() {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return static_cast<double>(state >> 11) * 0x1.0p-53;
-  }
-};
-
 FillrateTriangles make(int size, std::size_t count) {
   FillrateTriangles out;
   out.size = size;
-  Lcg random{0x5eed0000ull + static_cast<std::uint64_t>(size)};
+  BenchRandom random{0x5eed0000ull + static_cast<std::uint64_t>(size)};
   const double legs[3][2] = {{0.0, 0.0}, {2.0 * size / kWidth, 0.0}, {0.0, 2.0 * size / kHeight}};
   for (std::size_t t = 0; t < count; ++t) {
     // Nearest last: depth and w fall with the index.

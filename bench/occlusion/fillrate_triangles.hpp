@@ -5,11 +5,22 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "edgewise/vector.hpp"
 
 namespace edgewise::bench {
+
+// A fixed generator (a 64-bit linear congruential one), so that the occlusion workloads are the
+// same on every machine and standard library.
+struct BenchRandom {
+  std::uint64_t state;
+  double uniform() {  // in [0, 1)
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  }
+};
 
 struct FillrateTriangles {
   int size = 0;               // legs in pixels

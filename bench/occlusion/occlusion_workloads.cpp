@@ -27,11 +27,8 @@ const OcclusionBuffer& query_scene(Isa isa) {
 const std::vector<OcclusionRect>& query_rects() {
   static const std::vector<OcclusionRect> rects = [] {
     std::vector<OcclusionRect> out;
-    std::uint64_t state = 0x9ec7ull;
-    const auto uniform = [&] {
-      state = state * 6364136223846793005ull + 1442695040888963407ull;
-      return static_cast<double>(state >> 11) * 0x1.0p-53;
-    };
+    BenchRandom random{0x9ec7ull};
+    const auto uniform = [&] { return random.uniform(); };
     for (int i = 0; i < 65536; ++i) {
       const double w = 4.0 * std::exp2(5.0 * uniform()), h = 4.0 * std::exp2(5.0 * uniform());
       const double x = uniform() * (kWidth - w), y = uniform() * (kHeight - h);

@@ -17,8 +17,8 @@ namespace edgewise {
 namespace {
 
 // draw() as the occlusion buffer uses it: depth test less, one colour (no colours given, so the
-// kernels' uniform-colour path with no colour planes).
-DrawOptions depth_only(const OcclusionOptions& options, bool depth_write) {
+// kernels' uniform-colour path with no colour planes), which nothing reads.
+DrawOptions occlusion_draw_options(const OcclusionOptions& options, bool depth_write) {
   DrawOptions draw_options;
   draw_options.transform = options.transform;
   draw_options.cull = options.cull;
@@ -72,8 +72,8 @@ void OcclusionBuffer::clear() {
 
 DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
                                            const OcclusionOptions& options) {
-  const DrawReport report = draw(depth_, draw_mesh(mesh), depth_only(options, true));
-  rebuild_tile_bounds(options);
+  const DrawReport report = draw(depth_, draw_mesh(mesh), occlusion_draw_options(options, true));
+  rebuild_tile_bounds(options, "draw_occluders");
   return report;
 }
 
@@ -91,20 +91,20 @@ void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOption
   // Same tiles, same layout.
   const std::size_t values = (tile_max_.size() - detail::kTileMaximaPadding) * 64;
   std::copy_n(frame.depth_tiles(), values, depth_.depth_tiles());
-  rebuild_tile_bounds(options);
+  rebuild_tile_bounds(options, "copy_depth");
 }
 
 Visibility OcclusionBuffer::test_triangles(const OcclusionMesh& mesh,
                                            const OcclusionOptions& options) {
-  const DrawReport report = draw(depth_, draw_mesh(mesh), depth_only(options, false));
+  const DrawReport report = draw(depth_, draw_mesh(mesh), occlusion_draw_options(options, false));
   if (report.fragments == 0) return Visibility::outside;
   return report.fragments_passed > 0 ? Visibility::visible : Visibility::occluded;
 }
 
-void OcclusionBuffer::rebuild_tile_bounds(const OcclusionOptions& options) {
+void OcclusionBuffer::rebuild_tile_bounds(const OcclusionOptions& options, const char* caller) {
   const detail::KernelTable& kernels = detail::kernel_table(resolve_isa(options.isa));
   const detail::Workers workers =
-      detail::resolve_workers(options.threads, options.executor, "draw_occluders");
+      detail::resolve_workers(options.threads, options.executor, caller);
   const float* tiles = depth_.depth_tiles();
   const std::size_t count = tile_max_.size() - detail::kTileMaximaPadding;
   const std::size_t tasks = std::min(workers.threads, (count + kTilesPerTask - 1) / kTilesPerTask);
@@ -140,18 +140,19 @@ void OcclusionBuffer::test_boxes(std::span<const OcclusionBox> boxes, const Mat4
   const Viewport viewport{width(), height()};
   const GuardBandPlanes planes = guard_band_planes(viewport);
   std::array<detail::SampleRect, kQueriesPerChunk> samples;
+  std::array<bool, kQueriesPerChunk> unbounded;
   for (std::size_t first = 0; first < boxes.size(); first += kQueriesPerChunk) {
     const std::size_t count = std::min(kQueriesPerChunk, boxes.size() - first);
     for (std::size_t i = 0; i < count; ++i) {
       const detail::BoxSamples box =
           detail::box_samples(boxes[first + i], transform, viewport, planes, first + i);
       samples[i] = box.samples;  // empty, so outside, unless bounded
-      if (box.reach == detail::BoxReach::unbounded) {
-        // A range whose depth nothing lies at or below: visible wherever it reaches the view.
-        samples[i] = {0, 0, width() - 1, height() - 1, -1.0f};
-      }
+      unbounded[i] = box.reach == detail::BoxReach::unbounded;
     }
     kernels.test_sample_rects(depth, samples.data(), count, out.data() + first);
+    for (std::size_t i = 0; i < count; ++i) {
+      if (unbounded[i]) out[first + i] = Visibility::visible;
+    }
   }
 }
 

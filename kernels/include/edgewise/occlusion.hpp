@@ -118,7 +118,7 @@ class OcclusionBuffer {
   void read_depth(std::span<float> depth) const { depth_.read_depth(depth); }
 
  private:
-  void rebuild_tile_bounds(const OcclusionOptions& options);
+  void rebuild_tile_bounds(const OcclusionOptions& options, const char* caller);
 
   // The depth target; its colour is never read (draw() writes one colour into it).
   Framebuffer depth_;
