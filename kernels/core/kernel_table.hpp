@@ -25,6 +25,7 @@ struct DrawReport;
 
 namespace edgewise::detail {
 
+struct PlaneTiles;
 struct ShadeBatch;
 struct ShadeCounts;
 struct VertexStageCall;
@@ -81,7 +82,11 @@ struct ScreenMesh;
   X(test_sample_rects, void(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,  \
                             std::size_t count, Visibility* out))                                   \
   X(occlusion_tile_maxima,                                                                         \
-    void(const float* tiles, std::size_t first, std::size_t last, float* out))
+    void(const float* tiles, std::size_t first, std::size_t last, float* out))                     \
+  /* Depth kept as planes (plane_tiles.hpp): the values of tiles [first, last) whose planes the    \
+     depth tiles do not hold yet, written there. */                                                \
+  X(resolve_plane_tiles, void(const detail::PlaneTiles& planes, float* depth_tiles,                \
+                              std::int32_t tiles_x, std::size_t first, std::size_t last))
 
 struct KernelTable {
   Isa isa;  // the ISA the table's objects were compiled for

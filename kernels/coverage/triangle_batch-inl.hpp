@@ -146,8 +146,10 @@ struct VisibleGroup {
   }
 };
 
-// How many groups ahead of the one set up run_batch() prefetches a mesh's vertices.
+// How many groups ahead of the one set up run_batch() prefetches a mesh's vertices, and, for
+// visitors that can, the target's storage under the vertices (by then in cache).
 inline constexpr std::size_t kPrefetchGroups = 4;
+inline constexpr std::size_t kPrefetchTargetGroups = 2;
 
 // The corners and positions of triangles [first, first + count) into the setup lanes, lanes past
 // the end repeating the last triangle (their results are ignored); whether every lane is a
@@ -191,6 +193,12 @@ template <class Visitor>
     constexpr std::size_t kAhead = kPrefetchGroups * kLanes;
     if (batch.indices != nullptr && first + kAhead + kLanes <= batch.triangle_count)
       visitor.prefetch_vertices(batch.indices + 3 * (first + kAhead), 3 * kLanes);
+  }
+  if constexpr (requires(const std::uint32_t* v) { visitor.prefetch_targets(v, 0); }) {
+    constexpr std::size_t kLanes = kSetupLanes<Arch>;
+    constexpr std::size_t kAhead = kPrefetchTargetGroups * kLanes;
+    if (batch.indices != nullptr && first + kAhead + kLanes <= batch.triangle_count)
+      visitor.prefetch_targets(batch.indices + 3 * (first + kAhead), 3 * kLanes);
   }
 }
 

@@ -7,10 +7,10 @@
 
 namespace edgewise::detail {
 
-// The kernels' view of a screen mesh under `options`, clipped to `clip`; `texture` is the
-// call's texture flattened once (null without one).
+// The kernels' view of a screen mesh under `options`, clipped to the call's clip rectangle, with
+// its plane tiles if any; `texture` is the call's texture flattened once (null without one).
 ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
-                            const DrawOptions& options, const PixelRect& clip,
+                            const DrawOptions& options, const DrawCall& call,
                             const TextureDescription* texture);
 
 // shade_screen_mesh() of a binned() call: the screen mesh's triangles binned in ranges, one task

@@ -86,8 +86,9 @@ DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const Dra
 }
 
 ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
-                            const DrawOptions& options, const PixelRect& clip,
+                            const DrawOptions& options, const DrawCall& call,
                             const TextureDescription* texture) {
+  const PixelRect& clip = call.clip;
   ShadeBatch batch{{screen.positions.data(), screen.positions.size(), screen.indices.data(),
                     screen.indices.size() / 3, clip, options.cull, nullptr,
                     FramebufferAccess::sample_pattern(target)},
@@ -119,6 +120,7 @@ ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
   // budget's bounds do not hold: drawn exactly.
   if (batch.sample_count() == 1 && options.interpolation == InterpolationMethod::plane_equations)
     batch.budget_codes = budget_codes(options.error_budget);
+  batch.plane_tiles = call.plane_tiles;
   return batch;
 }
 
@@ -133,7 +135,7 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
     shade_in_bins(call, target, screen, options, texture);
     return;
   }
-  const ShadeBatch batch = make_shade_batch(target, screen, options, call.clip, texture);
+  const ShadeBatch batch = make_shade_batch(target, screen, options, call, texture);
   RasterReport raster;
   ShadeCounts counts;
   call.kernels->shade(batch, raster, counts);
@@ -150,21 +152,29 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
 
 }  // namespace detail
 
-DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options) {
-  detail::DrawCall call = detail::prepare_draw(target, mesh, options);
+namespace detail {
+
+DrawReport run_draw(DrawCall call, Framebuffer& target, const DrawMesh& mesh,
+                    const DrawOptions& options) {
   if (!call.has_work()) return call.report;
   if (call.binned()) {
     call.workers.call_up();
     if (mesh.indices.empty()) {
-      detail::draw_in_ranges(call, target, mesh, options);
+      draw_in_ranges(call, target, mesh, options);
     } else {
-      detail::draw_indexed_in_ranges(call, target, mesh, options);
+      draw_indexed_in_ranges(call, target, mesh, options);
     }
     return call.report;
   }
-  const detail::ScreenMesh screen = detail::map_to_screen(call, target, mesh, options);
-  detail::shade_screen_mesh(call, target, screen, options);
+  const ScreenMesh screen = map_to_screen(call, target, mesh, options);
+  shade_screen_mesh(call, target, screen, options);
   return call.report;
+}
+
+}  // namespace detail
+
+DrawReport draw(Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options) {
+  return detail::run_draw(detail::prepare_draw(target, mesh, options), target, mesh, options);
 }
 
 }  // namespace edgewise

@@ -4,6 +4,7 @@
 
 #include "vertex_stage/culled_triangles-inl.hpp"
 #include "shading/shade_multisample-inl.hpp"
+#include "shading/shade_occluder-inl.hpp"
 #include "../coverage/triangle_batch-inl.hpp"
 #include "vertex_stage/vertex_stage-inl.hpp"
 #include "vertex_stage/vertex_transform-inl.hpp"
@@ -13,6 +14,12 @@ namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 // One visitor for every interpolation method (method_interpolator-inl.hpp).
 void shade(const detail::ShadeBatch& batch, RasterReport& report, detail::ShadeCounts& counts) {
+  if (batch.plane_tiles.tiles != nullptr) {
+    OccluderVisitor<Arch> visitor(batch);
+    run_batch(batch.coverage, visitor, report);
+    visitor.add_counts(counts);
+    return;
+  }
   if (batch.coverage.samples.size() > 1) {
     MultisampleShadingVisitor<Arch> visitor(batch);
     run_batch(batch.coverage, visitor, report);

@@ -7,6 +7,7 @@
 #include "edgewise/draw.hpp"
 #include "../core/kernel_table.hpp"
 #include "../core/parallel.hpp"
+#include "shading/plane_tiles.hpp"
 #include "vertex_stage/screen_mesh.hpp"
 
 namespace edgewise::detail {
@@ -18,6 +19,8 @@ struct DrawCall {
   DrawReport report;  // isa and triangles filled in
   Workers workers;
   int samples = 1;  // the target's samples per pixel
+  // Occluders drawn into depth kept as planes (ShadeBatch::plane_tiles), or none.
+  PlaneTiles plane_tiles{};
   bool has_work() const { return !clip.empty() && report.triangles != 0; }
   // Whether the call draws in bins on several threads (else on the calling thread alone, as
   // one kernel call: the direct path, with no binning).
@@ -26,6 +29,10 @@ struct DrawCall {
 
 // Checks the arguments (draw.hpp says what throws) and chooses the ISA.
 DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const DrawOptions& options);
+
+// The call's stages after prepare_draw(): draw() is run_draw(prepare_draw(...), ...).
+DrawReport run_draw(DrawCall call, Framebuffer& target, const DrawMesh& mesh,
+                    const DrawOptions& options);
 
 // The vertex stage (vertex_stage.cpp, through the ISA's kernel): transform, clipping, screen
 // mapping and snapping of every triangle, and the culling of those set-up would cull, counted

@@ -1,5 +1,6 @@
-// OcclusionBuffer (occlusion.hpp): occluders and exact triangle queries through draw(), the
-// rectangle and box queries through the occlusion kernels.
+// OcclusionBuffer (occlusion.hpp): occluders through draw()'s pipeline into depth kept as planes,
+// exact triangle queries through draw(), the rectangle and box queries through the occlusion
+// kernels.
 #include "edgewise/occlusion.hpp"
 
 #include <algorithm>
@@ -11,6 +12,8 @@
 #include "../core/framebuffer_access.hpp"
 #include "../core/kernel_table.hpp"
 #include "../core/parallel.hpp"
+#include "../draw/draw_stages.hpp"
+#include "../draw/shading/plane_tiles.hpp"
 #include "query_bounds.hpp"
 
 namespace edgewise {
@@ -59,21 +62,40 @@ OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height) : dept
     throw std::invalid_argument("OcclusionBuffer: size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " has no pixel");
   }
-  tile_max_.assign(
-      static_cast<std::size_t>(depth_.tiles_x()) * depth_.tiles_y() + detail::kTileMaximaPadding,
-      -std::numeric_limits<float>::infinity());
+  const std::size_t tiles = static_cast<std::size_t>(depth_.tiles_x()) * depth_.tiles_y();
+  tile_max_.assign(tiles + detail::kTileMaximaPadding, -std::numeric_limits<float>::infinity());
+  planes_.resize(tiles);
+  slots_.resize(tiles);
   clear();
 }
 
+OcclusionBuffer::OcclusionBuffer(const OcclusionBuffer&) = default;
+OcclusionBuffer::OcclusionBuffer(OcclusionBuffer&&) noexcept = default;
+OcclusionBuffer& OcclusionBuffer::operator=(const OcclusionBuffer&) = default;
+OcclusionBuffer& OcclusionBuffer::operator=(OcclusionBuffer&&) noexcept = default;
+OcclusionBuffer::~OcclusionBuffer() = default;
+
 void OcclusionBuffer::clear() {
   depth_.clear(Vec4{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f);
+  std::fill(planes_.begin(), planes_.end(), detail::far_plane_tile());
   std::fill(tile_max_.begin(), tile_max_.end() - detail::kTileMaximaPadding, 1.0f);
 }
 
 DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
                                            const OcclusionOptions& options) {
-  const DrawReport report = draw(depth_, draw_mesh(mesh), occlusion_draw_options(options, true));
-  rebuild_tile_bounds(options, "draw_occluders");
+  const DrawMesh occluders = draw_mesh(mesh);
+  const DrawOptions draw_options = occlusion_draw_options(options, true);
+  if (resolve_isa(options.isa) == Isa::reference) {
+    // The reference has no planes: it draws into the values, which then hold every tile's depth.
+    const DrawReport report = draw(depth_, occluders, draw_options);
+    refresh_depth(options, "draw_occluders", false);
+    forget_planes();
+    return report;
+  }
+  detail::DrawCall call = detail::prepare_draw(depth_, occluders, draw_options);
+  call.plane_tiles = {planes_.data(), slots_.data()};
+  const DrawReport report = detail::run_draw(call, depth_, occluders, draw_options);
+  refresh_depth(options, "draw_occluders", true);
   return report;
 }
 
@@ -91,7 +113,8 @@ void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOption
   // Same tiles, same layout.
   const std::size_t values = (tile_max_.size() - detail::kTileMaximaPadding) * 64;
   std::copy_n(frame.depth_tiles(), values, depth_.depth_tiles());
-  rebuild_tile_bounds(options, "copy_depth");
+  refresh_depth(options, "copy_depth", false);
+  forget_planes();
 }
 
 Visibility OcclusionBuffer::test_triangles(const OcclusionMesh& mesh,
@@ -101,21 +124,40 @@ Visibility OcclusionBuffer::test_triangles(const OcclusionMesh& mesh,
   return report.fragments_passed > 0 ? Visibility::visible : Visibility::occluded;
 }
 
-void OcclusionBuffer::rebuild_tile_bounds(const OcclusionOptions& options, const char* caller) {
+void OcclusionBuffer::refresh_depth(const OcclusionOptions& options, const char* caller,
+                                    bool resolve) {
   const detail::KernelTable& kernels = detail::kernel_table(resolve_isa(options.isa));
   const detail::Workers workers =
       detail::resolve_workers(options.threads, options.executor, caller);
-  const float* tiles = depth_.depth_tiles();
-  const std::size_t count = tile_max_.size() - detail::kTileMaximaPadding;
+  // Written without invalidating the Framebuffer's own depth bounds: depth test less only ever
+  // lowers values, so its bounds stay bounds.
+  float* tiles = detail::FramebufferAccess::depth(depth_);
+  const std::size_t count = planes_.size();
+  const auto refresh = [&](std::size_t first, std::size_t last) {
+    if (resolve) {
+      kernels.resolve_plane_tiles({planes_.data(), slots_.data()}, tiles, depth_.tiles_x(), first,
+                                  last);
+    }
+    kernels.occlusion_tile_maxima(tiles, first, last, tile_max_.data());
+  };
   const std::size_t tasks = std::min(workers.threads, (count + kTilesPerTask - 1) / kTilesPerTask);
   if (tasks <= 1) {
-    kernels.occlusion_tile_maxima(tiles, 0, count, tile_max_.data());
+    refresh(0, count);
     return;
   }
-  workers.run(tasks, [&](std::size_t task) {
-    kernels.occlusion_tile_maxima(tiles, count * task / tasks, count * (task + 1) / tasks,
-                                  tile_max_.data());
-  });
+  workers.run(tasks,
+              [&](std::size_t task) { refresh(count * task / tasks, count * (task + 1) / tasks); });
+}
+
+void OcclusionBuffer::forget_planes() {
+  for (std::size_t t = 0; t < planes_.size(); ++t) {
+    detail::PlaneTile& tile = planes_[t];
+    tile.planes = 0;
+    tile.unresolved = false;
+    // No lower bound is known without reading the tile; the maximum is exact.
+    tile.lowest = -std::numeric_limits<float>::infinity();
+    tile.highest = tile_max_[t];
+  }
 }
 
 void OcclusionBuffer::test_rects(std::span<const OcclusionRect> rects, std::span<Visibility> out,

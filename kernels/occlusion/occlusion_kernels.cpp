@@ -1,6 +1,8 @@
-// The occlusion kernels (occlusion.hpp's rectangle and box queries), compiled once per ISA.
+// The occlusion kernels (occlusion.hpp's rectangle and box queries, and the values of depth kept
+// as planes), compiled once per ISA.
 #include "../core/isa_build.hpp"
 
+#include "../draw/shading/plane_tile_depths-inl.hpp"
 #include "rect_test-inl.hpp"
 #include "../core/isa_kernels.hpp"
 
@@ -16,6 +18,19 @@ void test_sample_rects(const detail::OcclusionDepth& depth, const detail::Sample
 
 void occlusion_tile_maxima(const float* tiles, std::size_t first, std::size_t last, float* out) {
   tile_maxima<Arch>(tiles, first, last, out);
+}
+
+void resolve_plane_tiles(const detail::PlaneTiles& planes, float* depth_tiles, std::int32_t tiles_x,
+                         std::size_t first, std::size_t last) {
+  const auto columns = static_cast<std::size_t>(tiles_x);
+  for (std::size_t t = first; t < last; ++t) {
+    detail::PlaneTile& tile = planes.tiles[t];
+    if (tile.planes == 0 || !tile.unresolved) continue;
+    write_plane_tile<Arch>(
+        tile, planes.slots[t], static_cast<std::int32_t>(t % columns) * kTileSize,
+        static_cast<std::int32_t>(t / columns) * kTileSize, depth_tiles + t * 64);
+    tile.unresolved = false;
+  }
 }
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

@@ -1,9 +1,11 @@
-// The occlusion kernels' reference: every sample of a rectangle read and compared, one at a time.
+// The occlusion kernels' reference: every sample of a rectangle read and compared, one at a time;
+// each value of a tile kept as planes by depth_at().
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
 #include "../core/reference_kernels.hpp"
+#include "../draw/shading/plane_tiles.hpp"
 
 namespace edgewise::reference {
 
@@ -29,6 +31,25 @@ void test_sample_rects(const detail::OcclusionDepth& depth, const detail::Sample
 void occlusion_tile_maxima(const float* tiles, std::size_t first, std::size_t last, float* out) {
   for (std::size_t t = first; t < last; ++t)
     out[t] = *std::max_element(tiles + t * 64, tiles + t * 64 + 64);
+}
+
+void resolve_plane_tiles(const detail::PlaneTiles& planes, float* depth_tiles, std::int32_t tiles_x,
+                         std::size_t first, std::size_t last) {
+  for (std::size_t t = first; t < last; ++t) {
+    detail::PlaneTile& tile = planes.tiles[t];
+    if (tile.planes == 0 || !tile.unresolved) continue;
+    const detail::PlaneSlots& slots = planes.slots[t];
+    const auto px = static_cast<std::int32_t>(t % static_cast<std::size_t>(tiles_x)) * 8;
+    const auto py = static_cast<std::int32_t>(t / static_cast<std::size_t>(tiles_x)) * 8;
+    for (int bit = 0; bit < 64; ++bit) {
+      const detail::DepthPlane* plane = &tile.plane;
+      for (int s = 0; s < tile.planes && tile.planes > 1; ++s) {
+        if ((slots.mask[s] >> bit) & 1) plane = &slots.plane[s];
+      }
+      depth_tiles[t * 64 + bit] = detail::depth_at(*plane, px + bit % 8, py + bit / 8);
+    }
+    tile.unresolved = false;
+  }
 }
 
 }  // namespace edgewise::reference

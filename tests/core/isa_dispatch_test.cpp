@@ -210,7 +210,8 @@ TEST_P(IsaForcing, KernelTableIsComplete) {
   EXPECT_NE(table.rasterize_areas, nullptr);
   EXPECT_NE(table.test_sample_rects, nullptr);
   EXPECT_NE(table.occlusion_tile_maxima, nullptr);
-  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 15,
+  EXPECT_NE(table.resolve_plane_tiles, nullptr);
+  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 16,
                 "a kernel was added to KernelTable: check it here");
 }
 

@@ -8,6 +8,7 @@
 #include "edgewise/draw.hpp"
 #include "../../coverage/triangle_batch.hpp"
 #include "../../texture/sample_kernels.hpp"
+#include "plane_tiles.hpp"
 
 namespace edgewise::detail {
 
@@ -42,6 +43,10 @@ struct ShadeBatch {
   TextureDerivatives derivatives = TextureDerivatives::quad;
   // The codes DrawOptions::error_budget allows (shading_budget.hpp); 0: the exact methods.
   int budget_codes = 0;
+  // An occlusion buffer's depth kept as planes (plane_tiles.hpp), or none. Given them, a kernel
+  // draws occluders: depth test less with writes into the planes and depth_tiles, no colour
+  // (shade_occluder-inl.hpp).
+  PlaneTiles plane_tiles{};
 
   // Samples per pixel of the target (framebuffer.hpp gives the layout).
   std::size_t sample_count() const {

@@ -37,6 +37,11 @@
 
 namespace edgewise {
 
+namespace detail {
+struct PlaneTile;
+struct PlaneSlots;
+}  // namespace detail
+
 enum class Visibility : std::uint8_t {
   visible,   // some sample may pass the depth test
   occluded,  // no sample can pass
@@ -74,6 +79,11 @@ class OcclusionBuffer {
  public:
   // Sides 1 .. kMaxTargetSize (coverage.hpp); throws std::invalid_argument otherwise.
   OcclusionBuffer(std::int32_t width, std::int32_t height);
+  OcclusionBuffer(const OcclusionBuffer&);
+  OcclusionBuffer(OcclusionBuffer&&) noexcept;
+  OcclusionBuffer& operator=(const OcclusionBuffer&);
+  OcclusionBuffer& operator=(OcclusionBuffer&&) noexcept;
+  ~OcclusionBuffer();
 
   std::int32_t width() const { return depth_.width(); }
   std::int32_t height() const { return depth_.height(); }
@@ -118,10 +128,18 @@ class OcclusionBuffer {
   void read_depth(std::span<float> depth) const { depth_.read_depth(depth); }
 
  private:
-  void rebuild_tile_bounds(const OcclusionOptions& options, const char* caller);
+  // Writes the values of tiles kept as planes into depth_ (with `resolve`), then rebuilds the
+  // tile maxima.
+  void refresh_depth(const OcclusionOptions& options, const char* caller, bool resolve);
+  // Every tile's depth now in depth_ alone (drawn or copied there).
+  void forget_planes();
 
-  // The depth target; its colour is never read (draw() writes one colour into it).
+  // The depth target; its colour is never read (the reference's draw() writes one colour).
   Framebuffer depth_;
+  // The depth as the SIMD kernels draw occluders into it: each tile as planes or as depth_'s
+  // values (kernels/draw/shading/plane_tiles.hpp).
+  std::vector<detail::PlaneTile> planes_;
+  std::vector<detail::PlaneSlots> slots_;
   // The largest depth of each 8x8 tile, exact: rebuilt after every change of the depths.
   std::vector<float> tile_max_;
 };

@@ -1,0 +1,253 @@
+// Occluders drawn into depth kept as planes (plane_tiles.hpp): depth test less with writes, no
+// colour. A tile the triangle lies wholly in front of, over the pixels it covers, takes the
+// triangle's plane for those pixels (masks and one plane written, no depth computed); one it lies
+// wholly behind is left; any other is worked out to 64 values and tested per pixel as draw()
+// tests it. Either way every pixel ends with the depth draw() would leave there.
+//
+// "Wholly in front" is decided from bounds on the depths the triangle's covered pixels compute,
+// from its vertex depths: every covered sample lies in the closed triangle, where the plane
+// through the vertices lies between their least and largest depth. The computed depth differs
+// from that plane by (a) the slopes' rounding to float, at most u (|dzdx| |dx| + |dzdy| |dy|)
+// plus the double set-up's 2^-52 relative (u = 2^-24), and (b) the formula's three roundings,
+// at most 3 u M (shade_depth-inl.hpp's hidden()), M = |z0| + |dzdy| max|dy| + |dzdx| max|dx|,
+// where max|dx|, max|dy| over the triangle are the vertices' largest offsets from vertex 0. So
+// every covered pixel's computed depth lies within 4.01 u M of [least, largest]; the bounds below
+// widen by 8 u M, which also covers M's computation in double, and are rounded to float away
+// from the range. Clamping to [0, 1] keeps the order.
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include <xsimd/xsimd.hpp>
+
+#include "plane_setup-inl.hpp"
+#include "plane_tile_depths-inl.hpp"
+#include "shade_batch.hpp"
+#include "../../coverage/tile_masks-inl.hpp"
+
+namespace edgewise::EDGEWISE_ISA_NAMESPACE {
+
+template <class Arch>
+class OccluderVisitor {
+ public:
+  using Floats = xsimd::batch<float, Arch>;
+  using Mask = xsimd::batch_bool<float, Arch>;
+  static constexpr std::size_t kLanes = Floats::size;
+  static constexpr std::size_t kParts = kTileSize / kLanes;
+  static constexpr std::size_t kGroupLanes = kSetupLanes<Arch>;
+
+  explicit OccluderVisitor(const detail::ShadeBatch& batch)
+      : batch_(batch), tiles_(batch.plane_tiles.tiles), slots_(batch.plane_tiles.slots) {}
+
+  // The depth planes of a group of triangles (plane_setup-inl.hpp) and their depth bounds.
+  void begin_group(const GroupCorners<Arch>& corners, const TriangleGroup<Arch>& positions) {
+    PlaneGroupInput<Arch> in;
+    for (std::size_t l = 0; l < kGroupLanes; ++l) {
+      const bool valid = corners.valid[l];  // a bad index reads nothing; the lane is not drawn
+      for (int i = 0; i < 3; ++i) {
+        in.x[i][l] = positions.x[i][l];
+        in.y[i][l] = positions.y[i][l];
+        in.z[i][l] = valid ? batch_.depth[corners.vertex[l][i]] : 0.0f;
+      }
+    }
+    set_up_plane_group(in, /*colour_planes=*/false, /*normal_planes=*/false,
+                       /*perspective_correct=*/false, group_);
+    for (std::size_t l = 0; l < kGroupLanes; ++l) {
+      const double reach_x =
+          std::fmax(std::fabs(in.x[1][l] - in.x[0][l]), std::fabs(in.x[2][l] - in.x[0][l]));
+      const double reach_y =
+          std::fmax(std::fabs(in.y[1][l] - in.y[0][l]), std::fabs(in.y[2][l] - in.y[0][l]));
+      const double margin = 8.0 * 0x1p-24 *
+                            (std::fabs(group_.z0[l]) + std::fabs(group_.dzdy[l]) * reach_y +
+                             std::fabs(group_.dzdx[l]) * reach_x);
+      const double least = std::fmin(std::fmin(in.z[0][l], in.z[1][l]), in.z[2][l]);
+      // NaN margins (infinite slopes) give NaN bounds, which decide nothing: every tile is then
+      // tested per pixel.
+      lowest_[l] = float_below(clamp_unit(least - margin));
+      highest_[l] = float_above(clamp_unit(group_.max_depth[l] + margin));
+    }
+  }
+
+  // Starts fetching what run_batch() and begin_group() will read of the vertices `corners`.
+  [[gnu::always_inline]] void prefetch_vertices(const std::uint32_t* corners,
+                                                std::size_t count) const {
+    const std::size_t vertices = batch_.coverage.vertex_count;
+    if (vertices == 0) return;
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t v = corners[i] < vertices ? corners[i] : vertices - 1;
+      __builtin_prefetch(batch_.coverage.vertices + v);
+      __builtin_prefetch(batch_.depth + v);
+    }
+  }
+
+  // Starts fetching the tiles under the vertices `corners`, whose positions the prefetch above
+  // has brought in: small triangles land anywhere, and their tiles' cache misses would otherwise
+  // be most of their cost.
+  [[gnu::always_inline]] void prefetch_targets(const std::uint32_t* corners,
+                                               std::size_t count) const {
+    const std::size_t vertices = batch_.coverage.vertex_count;
+    if (vertices == 0) return;
+    const PixelRect& clip = batch_.coverage.clip;
+    // Inside the clip rectangle (NaN compares false: its first column or row).
+    const auto inside = [](float v, std::int32_t lo, std::int32_t hi) {
+      return v >= static_cast<float>(lo)
+                 ? (v < static_cast<float>(hi) ? static_cast<std::int32_t>(v) : hi - 1)
+                 : lo;
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t v = corners[i] < vertices ? corners[i] : vertices - 1;
+      const Vec2 p = batch_.coverage.vertices[v];
+      const std::size_t index =
+          static_cast<std::size_t>(inside(p.y, clip.y0, clip.y1) / kTileSize) *
+              static_cast<std::size_t>(batch_.tiles_x) +
+          static_cast<std::size_t>(inside(p.x, clip.x0, clip.x1) / kTileSize);
+      __builtin_prefetch(tiles_ + index, 1);
+      const float* depth = batch_.depth_tiles + index * 64;
+      for (int line = 0; line < 4; ++line)
+        __builtin_prefetch(depth + line * 16, 1);
+    }
+  }
+
+  // Triangle t, lane l of the last begin_group().
+  void begin_triangle(std::uint32_t, std::size_t l) {
+    plane_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
+    lowest_depth_ = lowest_[l];
+    highest_depth_ = highest_[l];
+  }
+
+  void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
+    const std::size_t index =
+        static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(batch_.tiles_x) + tile_x;
+    fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
+    detail::PlaneTile& tile = tiles_[index];
+    if (highest_depth_ < tile.lowest) {
+      if (mask == kAll) {
+        take_tile(tile);
+        passed_ += 64;
+        return;
+      }
+      if (tile.planes != 0 && take_pixels(tile, slots_[index], mask)) {
+        passed_ += static_cast<std::uint64_t>(std::popcount(mask));
+        return;
+      }
+    } else if (lowest_depth_ >= tile.highest) {
+      return;  // behind every depth of the tile
+    }
+    float* depth = batch_.depth_tiles + index * 64;
+    const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
+    const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
+    if (tile.planes != 0) {
+      write_plane_tile<Arch>(tile, slots_[index], px, py, depth);
+      tile.planes = 0;
+      tile.unresolved = false;
+    }
+    test_pixels(tile, mask, depth, px, py);
+  }
+
+  void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
+                  std::uint64_t mask) {
+    for (std::uint32_t tile_x = begin; tile_x < end; ++tile_x)
+      tile(tile_x, tile_y, mask);
+  }
+
+  void add_counts(detail::ShadeCounts& counts) const {
+    counts.fragments += fragments_;
+    counts.passed += passed_;
+  }
+
+ private:
+  static constexpr std::uint64_t kAll = ~std::uint64_t{0};
+
+  // Clamped to [0, 1]; NaN stays NaN.
+  static double clamp_unit(double z) {
+    return z > 0.0 ? (z < 1.0 ? z : 1.0) : (z <= 0.0 ? 0.0 : z);
+  }
+  // The float nearest z on its side: at most z, or at least z.
+  static float float_below(double z) {
+    const float f = static_cast<float>(z);
+    return f > z ? std::nextafter(f, -1.0f) : f;
+  }
+  static float float_above(double z) {
+    const float f = static_cast<float>(z);
+    return f < z ? std::nextafter(f, 2.0f) : f;
+  }
+
+  // The whole tile becomes the triangle's plane.
+  void take_tile(detail::PlaneTile& tile) const {
+    tile.plane = plane_;
+    tile.planes = 1;
+    tile.lowest = lowest_depth_;
+    tile.highest = highest_depth_;
+    tile.unresolved = true;
+  }
+
+  // The triangle's plane takes the pixels of `mask` (some, not all) from the planes that held
+  // them; false when every slot stays in use (the tile is then tested per pixel).
+  bool take_pixels(detail::PlaneTile& tile, detail::PlaneSlots& slots, std::uint64_t mask) const {
+    int kept = 1;
+    if (tile.planes == 1) {
+      slots.mask[0] = ~mask;
+      slots.plane[0] = tile.plane;
+    } else {
+      std::uint64_t left[detail::kPlaneTileSlots];
+      int from[detail::kPlaneTileSlots];
+      kept = 0;
+      for (int s = 0; s < tile.planes; ++s) {
+        left[kept] = slots.mask[s] & ~mask;
+        from[kept] = s;
+        kept += left[kept] != 0;
+      }
+      if (kept == detail::kPlaneTileSlots) return false;
+      for (int k = 0; k < kept; ++k) {
+        if (from[k] != k) slots.plane[k] = slots.plane[from[k]];
+        slots.mask[k] = left[k];
+      }
+    }
+    slots.mask[kept] = mask;
+    slots.plane[kept] = plane_;
+    tile.planes = static_cast<std::uint8_t>(kept + 1);
+    // The triangle's depths lie below the tile's lowest; the highest still bounds the rest.
+    tile.lowest = lowest_depth_;
+    tile.unresolved = true;
+    return true;
+  }
+
+  // draw()'s depth test less with writes, per pixel, on a tile of values.
+  void test_pixels(detail::PlaneTile& tile, std::uint64_t mask, float* depth, std::int32_t px,
+                   std::int32_t py) {
+    const TilePlaneTerms<Arch> terms(plane_, px, py);
+    std::uint64_t passed = 0;
+    for (std::uint32_t rows = covered_rows(mask); rows != 0; rows &= rows - 1) {
+      const int row = std::countr_zero(rows);
+      const std::uint32_t row_bits = static_cast<std::uint32_t>(mask >> (row * 8)) & 0xFFu;
+      for (std::size_t h = 0; h < kParts; ++h) {
+        float* at = depth + row * kTileSize + h * kLanes;
+        const Floats z = terms.depth(row, h);
+        const Floats stored = Floats::load_aligned(at);
+        const Mask write = lanes_of_bits<Arch>(row_bits >> (h * kLanes)) && z < stored;
+        xsimd::select(write, z, stored).store_aligned(at);
+        passed += static_cast<std::uint64_t>(std::popcount(bits_of_lanes<Arch>(write)));
+      }
+    }
+    passed_ += passed;
+    // Values only fall: the highest still bounds them, and the new ones lie at or above
+    // lowest_depth_ (a NaN bound says nothing: the written ones lie in [0, 1]).
+    if (!(lowest_depth_ >= tile.lowest)) {
+      tile.lowest = lowest_depth_ == lowest_depth_ ? lowest_depth_ : std::fmin(tile.lowest, 0.0f);
+    }
+  }
+
+  const detail::ShadeBatch& batch_;
+  detail::PlaneTile* const tiles_;
+  detail::PlaneSlots* const slots_;
+  PlaneGroup<Arch> group_;
+  float lowest_[kGroupLanes], highest_[kGroupLanes];
+  detail::DepthPlane plane_{};
+  float lowest_depth_ = 0.0f, highest_depth_ = 1.0f;
+  std::uint64_t fragments_ = 0, passed_ = 0;
+};
+
+}  // namespace edgewise::EDGEWISE_ISA_NAMESPACE
