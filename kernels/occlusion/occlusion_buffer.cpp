@@ -152,7 +152,7 @@ void OcclusionBuffer::refresh_depth(const OcclusionOptions& options, const char*
 void OcclusionBuffer::forget_planes() {
   for (std::size_t t = 0; t < planes_.size(); ++t) {
     detail::PlaneTile& tile = planes_[t];
-    tile.planes = 0;
+    tile.kind = detail::TileKind::values;
     tile.unresolved = false;
     // No lower bound is known without reading the tile; the maximum is exact.
     tile.lowest = -std::numeric_limits<float>::infinity();

@@ -25,7 +25,7 @@ void resolve_plane_tiles(const detail::PlaneTiles& planes, float* depth_tiles, s
   const auto columns = static_cast<std::size_t>(tiles_x);
   for (std::size_t t = first; t < last; ++t) {
     detail::PlaneTile& tile = planes.tiles[t];
-    if (tile.planes == 0 || !tile.unresolved) continue;
+    if (tile.kind == detail::TileKind::values || !tile.unresolved) continue;
     write_plane_tile<Arch>(
         tile, planes.slots[t], static_cast<std::int32_t>(t % columns) * kTileSize,
         static_cast<std::int32_t>(t / columns) * kTileSize, depth_tiles + t * 64);

@@ -37,13 +37,13 @@ void resolve_plane_tiles(const detail::PlaneTiles& planes, float* depth_tiles, s
                          std::size_t first, std::size_t last) {
   for (std::size_t t = first; t < last; ++t) {
     detail::PlaneTile& tile = planes.tiles[t];
-    if (tile.planes == 0 || !tile.unresolved) continue;
+    if (tile.kind == detail::TileKind::values || !tile.unresolved) continue;
     const detail::PlaneSlots& slots = planes.slots[t];
     const auto px = static_cast<std::int32_t>(t % static_cast<std::size_t>(tiles_x)) * 8;
     const auto py = static_cast<std::int32_t>(t / static_cast<std::size_t>(tiles_x)) * 8;
     for (int bit = 0; bit < 64; ++bit) {
       const detail::DepthPlane* plane = &tile.plane;
-      for (int s = 0; s < tile.planes && tile.planes > 1; ++s) {
+      for (int s = 0; s < detail::kPlaneTileSlots && tile.kind == detail::TileKind::slots; ++s) {
         if ((slots.mask[s] >> bit) & 1) plane = &slots.plane[s];
       }
       depth_tiles[t * 64 + bit] = detail::depth_at(*plane, px + bit % 8, py + bit / 8);

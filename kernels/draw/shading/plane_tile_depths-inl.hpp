@@ -54,13 +54,21 @@ inline void write_plane_tile(const detail::PlaneTile& tile, const detail::PlaneS
   using Terms = TilePlaneTerms<Arch>;
   using Floats = typename Terms::Floats;
   constexpr std::size_t kLanes = Terms::kLanes, kParts = Terms::kParts;
-  // The first plane everywhere, then each other's values where its mask holds the pixel.
-  const Terms first(tile.planes == 1 ? tile.plane : slots.plane[0], px, py);
+  // The first plane in use everywhere, then each other's values where its mask holds the pixel.
+  int first = 0;
+  if (tile.kind == detail::TileKind::slots) {
+    while (slots.mask[first] == 0)
+      ++first;
+  }
+  const Terms everywhere(tile.kind == detail::TileKind::plane ? tile.plane : slots.plane[first], px,
+                         py);
   for (int row = 0; row < kTileSize; ++row) {
     for (std::size_t h = 0; h < kParts; ++h)
-      first.depth(row, h).store_aligned(depth + row * kTileSize + h * kLanes);
+      everywhere.depth(row, h).store_aligned(depth + row * kTileSize + h * kLanes);
   }
-  for (int s = 1; s < tile.planes; ++s) {
+  if (tile.kind != detail::TileKind::slots) return;
+  for (int s = first + 1; s < detail::kPlaneTileSlots; ++s) {
+    if (slots.mask[s] == 0) continue;
     const Terms terms(slots.plane[s], px, py);
     for (int row = 0; row < kTileSize; ++row) {
       const auto row_bits = static_cast<std::uint32_t>(slots.mask[s] >> (row * 8)) & 0xFFu;

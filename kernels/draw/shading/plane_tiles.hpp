@@ -15,21 +15,27 @@ namespace edgewise::detail {
 
 inline constexpr int kPlaneTileSlots = 4;
 
+// What holds a tile's depths.
+enum class TileKind : std::uint8_t {
+  values,  // the 64 values of the Framebuffer's tile, as draw() keeps them
+  plane,   // PlaneTile::plane, at every pixel
+  slots,   // the tile's PlaneSlots
+};
+
 // One tile: 32 bytes, so that the drawing of whole tiles, the common case, reads and writes
-// little. `planes` is 0 when the tile's depths are the 64 values of the Framebuffer's tile, as
-// draw() keeps them; 1 when `plane` holds every pixel; 2 .. kPlaneTileSlots when the tile's
-// PlaneSlots hold them. `lowest` and `highest` bound every depth of the tile, in every state;
-// they need not be tight.
+// little. `lowest` and `highest` bound every depth of the tile, whatever holds them; they need
+// not be tight.
 struct alignas(32) PlaneTile {
   DepthPlane plane;
   float lowest, highest;
-  std::uint8_t planes;
+  TileKind kind;
   bool unresolved;  // planes whose values the Framebuffer's tile does not hold yet
 };
 static_assert(sizeof(PlaneTile) == 32);
 
-// The planes of a tile with several: the first `planes` masks are disjoint and together hold all
-// 64 pixels (bit y * 8 + x). One per tile, read only for tiles in that state.
+// The planes of a tile of kind slots: the masks are disjoint and together hold all 64 pixels
+// (bit y * 8 + x); a slot with an empty mask is free. One per tile, read only for tiles of that
+// kind.
 struct alignas(64) PlaneSlots {
   std::uint64_t mask[kPlaneTileSlots];
   DepthPlane plane[kPlaneTileSlots];
@@ -47,7 +53,7 @@ inline PlaneTile far_plane_tile() {
   PlaneTile tile{};
   tile.plane = DepthPlane{1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   tile.lowest = tile.highest = 1.0f;
-  tile.planes = 1;
+  tile.kind = TileKind::plane;
   tile.unresolved = false;
   return tile;
 }

@@ -57,13 +57,13 @@ class OccluderVisitor {
                        /*perspective_correct=*/false, group_);
     for (std::size_t l = 0; l < kGroupLanes; ++l) {
       const double reach_x =
-          std::fmax(std::fabs(in.x[1][l] - in.x[0][l]), std::fabs(in.x[2][l] - in.x[0][l]));
+          larger(std::fabs(in.x[1][l] - in.x[0][l]), std::fabs(in.x[2][l] - in.x[0][l]));
       const double reach_y =
-          std::fmax(std::fabs(in.y[1][l] - in.y[0][l]), std::fabs(in.y[2][l] - in.y[0][l]));
+          larger(std::fabs(in.y[1][l] - in.y[0][l]), std::fabs(in.y[2][l] - in.y[0][l]));
       const double margin = 8.0 * 0x1p-24 *
                             (std::fabs(group_.z0[l]) + std::fabs(group_.dzdy[l]) * reach_y +
                              std::fabs(group_.dzdx[l]) * reach_x);
-      const double least = std::fmin(std::fmin(in.z[0][l], in.z[1][l]), in.z[2][l]);
+      const double least = smaller(smaller(in.z[0][l], in.z[1][l]), in.z[2][l]);
       // NaN margins (infinite slopes) give NaN bounds, which decide nothing: every tile is then
       // tested per pixel.
       lowest_[l] = float_below(clamp_unit(least - margin));
@@ -116,41 +116,40 @@ class OccluderVisitor {
     plane_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
     lowest_depth_ = lowest_[l];
     highest_depth_ = highest_[l];
+    whole_tile_.plane = plane_;
+    whole_tile_.lowest = lowest_depth_;
+    whole_tile_.highest = highest_depth_;
+    whole_tile_.kind = detail::TileKind::plane;
+    whole_tile_.unresolved = true;
   }
 
   void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
-    const std::size_t index =
-        static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(batch_.tiles_x) + tile_x;
     fragments_ += static_cast<std::uint64_t>(std::popcount(mask));
-    detail::PlaneTile& tile = tiles_[index];
-    if (highest_depth_ < tile.lowest) {
-      if (mask == kAll) {
-        take_tile(tile);
-        passed_ += 64;
-        return;
-      }
-      if (tile.planes != 0 && take_pixels(tile, slots_[index], mask)) {
-        passed_ += static_cast<std::uint64_t>(std::popcount(mask));
-        return;
-      }
-    } else if (lowest_depth_ >= tile.highest) {
-      return;  // behind every depth of the tile
-    }
-    float* depth = batch_.depth_tiles + index * 64;
-    const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
-    const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
-    if (tile.planes != 0) {
-      write_plane_tile<Arch>(tile, slots_[index], px, py, depth);
-      tile.planes = 0;
-      tile.unresolved = false;
-    }
-    test_pixels(tile, mask, depth, px, py);
+    update(tile_x, tile_y, mask);
   }
 
+  // A run of tiles under one mask: most often whole, each taking the triangle's plane in one
+  // store of the tile made in begin_triangle(), the counts kept in registers.
   void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
                   std::uint64_t mask) {
-    for (std::uint32_t tile_x = begin; tile_x < end; ++tile_x)
-      tile(tile_x, tile_y, mask);
+    fragments_ += static_cast<std::uint64_t>(std::popcount(mask)) * (end - begin);
+    if (mask != kAll) {
+      for (std::uint32_t tile_x = begin; tile_x < end; ++tile_x)
+        update(tile_x, tile_y, mask);
+      return;
+    }
+    detail::PlaneTile* row = tiles_ + static_cast<std::size_t>(tile_y) * batch_.tiles_x;
+    const float highest = highest_depth_;
+    std::uint64_t taken = 0;
+    for (std::uint32_t tile_x = begin; tile_x < end; ++tile_x) {
+      if (highest < row[tile_x].lowest) {
+        row[tile_x] = whole_tile_;
+        taken += 64;
+      } else {
+        update(tile_x, tile_y, kAll);
+      }
+    }
+    passed_ += taken;
   }
 
   void add_counts(detail::ShadeCounts& counts) const {
@@ -161,54 +160,77 @@ class OccluderVisitor {
  private:
   static constexpr std::uint64_t kAll = ~std::uint64_t{0};
 
+  // The triangle's samples `mask` (not empty) of the tile drawn.
+  void update(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
+    const std::size_t index =
+        static_cast<std::size_t>(tile_y) * static_cast<std::size_t>(batch_.tiles_x) + tile_x;
+    detail::PlaneTile& tile = tiles_[index];
+    if (highest_depth_ < tile.lowest) {
+      if (mask == kAll) {
+        tile = whole_tile_;
+        passed_ += 64;
+        return;
+      }
+      if (tile.kind != detail::TileKind::values && take_pixels(tile, slots_[index], mask)) {
+        passed_ += static_cast<std::uint64_t>(std::popcount(mask));
+        return;
+      }
+    } else if (lowest_depth_ >= tile.highest) {
+      return;  // behind every depth of the tile
+    }
+    float* depth = batch_.depth_tiles + index * 64;
+    const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
+    const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
+    if (tile.kind != detail::TileKind::values) {
+      write_plane_tile<Arch>(tile, slots_[index], px, py, depth);
+      tile.kind = detail::TileKind::values;
+      tile.unresolved = false;
+    }
+    test_pixels(tile, mask, depth, px, py);
+  }
+
   // Clamped to [0, 1]; NaN stays NaN.
   static double clamp_unit(double z) {
     return z > 0.0 ? (z < 1.0 ? z : 1.0) : (z <= 0.0 ? 0.0 : z);
   }
-  // The float nearest z on its side: at most z, or at least z.
+  // A float at most z, or at least z, for z in [0, 1] (NaN passes): the nearest, moved to its
+  // neighbour when it lies on the wrong side (then it is above 0, or below 1).
   static float float_below(double z) {
     const float f = static_cast<float>(z);
-    return f > z ? std::nextafter(f, -1.0f) : f;
+    return f > z ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) - 1u) : f;
   }
   static float float_above(double z) {
     const float f = static_cast<float>(z);
-    return f < z ? std::nextafter(f, 2.0f) : f;
+    return f < z ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) + 1u) : f;
   }
-
-  // The whole tile becomes the triangle's plane.
-  void take_tile(detail::PlaneTile& tile) const {
-    tile.plane = plane_;
-    tile.planes = 1;
-    tile.lowest = lowest_depth_;
-    tile.highest = highest_depth_;
-    tile.unresolved = true;
-  }
+  // Plain comparisons: std::fmax and std::fmin compile to library calls (a NaN lane gives NaN
+  // bounds either way, which decide nothing).
+  static double larger(double a, double b) { return a > b ? a : b; }
+  static double smaller(double a, double b) { return a < b ? a : b; }
 
   // The triangle's plane takes the pixels of `mask` (some, not all) from the planes that held
-  // them; false when every slot stays in use (the tile is then tested per pixel).
+  // them, in a free slot; false when no slot is free (the tile is then tested per pixel).
   bool take_pixels(detail::PlaneTile& tile, detail::PlaneSlots& slots, std::uint64_t mask) const {
-    int kept = 1;
-    if (tile.planes == 1) {
+    if (tile.kind == detail::TileKind::plane) {
       slots.mask[0] = ~mask;
       slots.plane[0] = tile.plane;
+      slots.mask[1] = mask;
+      slots.plane[1] = plane_;
+      slots.mask[2] = slots.mask[3] = 0;
+      tile.kind = detail::TileKind::slots;
     } else {
       std::uint64_t left[detail::kPlaneTileSlots];
-      int from[detail::kPlaneTileSlots];
-      kept = 0;
-      for (int s = 0; s < tile.planes; ++s) {
-        left[kept] = slots.mask[s] & ~mask;
-        from[kept] = s;
-        kept += left[kept] != 0;
+      int free = detail::kPlaneTileSlots;
+      for (int s = detail::kPlaneTileSlots - 1; s >= 0; --s) {
+        left[s] = slots.mask[s] & ~mask;
+        free = left[s] == 0 ? s : free;
       }
-      if (kept == detail::kPlaneTileSlots) return false;
-      for (int k = 0; k < kept; ++k) {
-        if (from[k] != k) slots.plane[k] = slots.plane[from[k]];
-        slots.mask[k] = left[k];
-      }
+      if (free == detail::kPlaneTileSlots) return false;
+      for (int s = 0; s < detail::kPlaneTileSlots; ++s)
+        slots.mask[s] = left[s];
+      slots.mask[free] = mask;
+      slots.plane[free] = plane_;
     }
-    slots.mask[kept] = mask;
-    slots.plane[kept] = plane_;
-    tile.planes = static_cast<std::uint8_t>(kept + 1);
     // The triangle's depths lie below the tile's lowest; the highest still bounds the rest.
     tile.lowest = lowest_depth_;
     tile.unresolved = true;
@@ -247,6 +269,7 @@ class OccluderVisitor {
   float lowest_[kGroupLanes], highest_[kGroupLanes];
   detail::DepthPlane plane_{};
   float lowest_depth_ = 0.0f, highest_depth_ = 1.0f;
+  detail::PlaneTile whole_tile_{};  // a tile the triangle covers whole, in front of it
   std::uint64_t fragments_ = 0, passed_ = 0;
 };
 
