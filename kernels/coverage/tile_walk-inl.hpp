@@ -371,7 +371,7 @@ template <class Arch, class Visitor>
   const PixelRect& box = setup.box;
   const std::int32_t dx = box.x0 - setup.origin_x, dy = box.y0 - setup.origin_y;  // 0 .. 7
   const std::int32_t width = box.x1 - box.x0, height = box.y1 - box.y0;           // 1 .. 16
-  std::uint64_t tiles[3][3] = {};
+  std::uint64_t block[2][2] = {};
   for (std::int32_t by = 0; by < 2; ++by) {
     const std::int32_t rows =
         height - kTileSize * by < kTileSize ? height - kTileSize * by : kTileSize;
@@ -385,20 +385,29 @@ template <class Arch, class Visitor>
         g[e] = static_cast<std::int32_t>(setup.edge[e].g) +
                setup.edge[e].a * (dx + kTileSize * bx) + setup.edge[e].b * (dy + kTileSize * by);
       }
-      const std::uint64_t block =
-          evaluator.coverage(g) & row_bits(0, rows) & column_bits(0, columns);
-      // Block column c lands in column c + dx of tile column bx, c + dx - 8 of the next one;
-      // block row r in row r + dy of tile row by, r + dy - 8 of the next.
-      const std::uint64_t left = (block & column_bits(0, kTileSize - dx)) << dx;
-      const std::uint64_t right = dx == 0 ? 0 : (block >> (kTileSize - dx)) & column_bits(0, dx);
-      tiles[by][bx] |= left << (8 * dy);
-      tiles[by][bx + 1] |= right << (8 * dy);
-      if (dy != 0) {
-        tiles[by + 1][bx] |= left >> (8 * (kTileSize - dy));
-        tiles[by + 1][bx + 1] |= right >> (8 * (kTileSize - dy));
-      }
+      block[by][bx] = evaluator.coverage(g) & row_bits(0, rows) & column_bits(0, columns);
     }
   }
+  // Block column c lands in column c + dx of its tile column, c + dx - 8 of the next; block row
+  // r in row r + dy of its tile row, r + dy - 8 of the next. Each tile's mask is the OR of the
+  // parts that land in it, formed in registers: read-modify-writes of an array of masks were
+  // compiled to 16-byte loads over 8-byte stores, which stall store forwarding.
+  const std::uint64_t keep_left = column_bits(0, kTileSize - dx);
+  const auto left = [&](std::uint64_t b) { return (b & keep_left) << dx; };
+  const auto right = [&](std::uint64_t b) {
+    return dx == 0 ? 0 : (b >> (kTileSize - dx)) & column_bits(0, dx);
+  };
+  const auto top = [&](std::uint64_t m) { return m << (8 * dy); };
+  const auto bottom = [&](std::uint64_t m) { return dy == 0 ? 0 : m >> (8 * (kTileSize - dy)); };
+  const std::uint64_t l00 = left(block[0][0]), r00 = right(block[0][0]);
+  const std::uint64_t l01 = left(block[0][1]), r01 = right(block[0][1]);
+  const std::uint64_t l10 = left(block[1][0]), r10 = right(block[1][0]);
+  const std::uint64_t l11 = left(block[1][1]), r11 = right(block[1][1]);
+  const std::uint64_t tiles[3][3] = {
+      {top(l00), top(r00) | top(l01), top(r01)},
+      {bottom(l00) | top(l10), bottom(r00) | bottom(l01) | top(r10) | top(l11),
+       bottom(r01) | top(r11)},
+      {bottom(l10), bottom(r10) | bottom(l11), bottom(r11)}};
   const std::uint32_t tx = static_cast<std::uint32_t>(setup.origin_x / kTileSize);
   const std::uint32_t ty = static_cast<std::uint32_t>(setup.origin_y / kTileSize);
   deliver_tile_grid(tx, ty, tiles, visitor);

@@ -112,11 +112,31 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
       });
   ShadePlan plan;
   plan_shading(plan, call, grid, lists, range_batches);
+  // Occluders' planes: room for every list's triangles, each task's from its own first plane.
+  std::vector<std::uint32_t> first_plane(plan.tasks.size());
+  if (call.plane_store != nullptr) {
+    std::size_t planes = 0;
+    for (std::size_t index = 0; index < plan.tasks.size(); ++index) {
+      first_plane[index] = static_cast<std::uint32_t>(planes);
+      const ShadeTask& task = plan.dealt(index);
+      for (std::size_t r = task.first; r < task.end; ++r)
+        planes += plan.refs[r].list->triangles();
+    }
+    const std::uint32_t first = call.plane_store->reserve(planes);
+    for (std::uint32_t& task_first : first_plane)
+      task_first += first;
+  }
   std::vector<BinCounts> task_counts(plan.tasks.size());
   call.workers.run(plan.tasks.size(), [&](std::size_t index) {
     const ShadeTask& task = plan.dealt(index);
     ShadeCounts& counts = task_counts[index].shading;
     RasterReport& triangles = task_counts[index].triangles;
+    std::uint32_t next_plane = first_plane[index];
+    const auto with_planes = [&](ShadeBatch& batch) {
+      if (call.plane_store == nullptr) return;
+      batch.plane_tiles = call.plane_store->view(next_plane);
+      next_plane += static_cast<std::uint32_t>(batch.coverage.triangle_count);
+    };
     if (one_screen && task.end - task.first > 1) {
       thread_local GrowableArray<std::uint32_t> joined;  // kept: no allocation once warm
       join_lists(plan.refs, task.first, task.end, joined);
@@ -124,6 +144,7 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
       batch.coverage.clip = task.rect;
       batch.coverage.indices = joined.data();
       batch.coverage.triangle_count = joined.size() / 3;
+      with_planes(batch);
       call.kernels->shade(batch, triangles, counts);
       return;
     }
@@ -133,6 +154,7 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
       batch.coverage.clip = task.rect;
       batch.coverage.indices = list.data();
       batch.coverage.triangle_count = list.triangles();
+      with_planes(batch);
       call.kernels->shade(batch, triangles, counts);
     }
     if (task.first == task.end) {
@@ -141,6 +163,7 @@ void shade_bins(DrawCall& call, const BinGrid& grid, const BinLists& lists,
       ShadeBatch batch = range_batches[0];
       batch.coverage.clip = task.rect;
       batch.coverage.triangle_count = 0;
+      with_planes(batch);
       call.kernels->shade(batch, triangles, counts);
     }
   });

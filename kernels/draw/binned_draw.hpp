@@ -7,8 +7,9 @@
 
 namespace edgewise::detail {
 
-// The kernels' view of a screen mesh under `options`, clipped to the call's clip rectangle, with
-// its plane tiles if any; `texture` is the call's texture flattened once (null without one).
+// The kernels' view of a screen mesh under `options`, clipped to the call's clip rectangle;
+// `texture` is the call's texture flattened once (null without one). Plane tiles are given per
+// kernel call, with the planes reserved for it (PlaneStore).
 ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
                             const DrawOptions& options, const DrawCall& call,
                             const TextureDescription* texture);

@@ -120,7 +120,6 @@ ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
   // budget's bounds do not hold: drawn exactly.
   if (batch.sample_count() == 1 && options.interpolation == InterpolationMethod::plane_equations)
     batch.budget_codes = budget_codes(options.error_budget);
-  batch.plane_tiles = call.plane_tiles;
   return batch;
 }
 
@@ -135,7 +134,11 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
     shade_in_bins(call, target, screen, options, texture);
     return;
   }
-  const ShadeBatch batch = make_shade_batch(target, screen, options, call, texture);
+  ShadeBatch batch = make_shade_batch(target, screen, options, call, texture);
+  if (call.plane_store != nullptr) {
+    batch.plane_tiles =
+        call.plane_store->view(call.plane_store->reserve(batch.coverage.triangle_count));
+  }
   RasterReport raster;
   ShadeCounts counts;
   call.kernels->shade(batch, raster, counts);

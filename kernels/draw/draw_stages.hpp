@@ -19,8 +19,8 @@ struct DrawCall {
   DrawReport report;  // isa and triangles filled in
   Workers workers;
   int samples = 1;  // the target's samples per pixel
-  // Occluders drawn into depth kept as planes (ShadeBatch::plane_tiles), or none.
-  PlaneTiles plane_tiles{};
+  // Occluders drawn into depth kept as planes (ShadeBatch::plane_tiles), or null.
+  const PlaneStore* plane_store = nullptr;
   bool has_work() const { return !clip.empty() && report.triangles != 0; }
   // Whether the call draws in bins on several threads (else on the calling thread alone, as
   // one kernel call: the direct path, with no binning).

@@ -13,6 +13,7 @@
 #include "../core/kernel_table.hpp"
 #include "../core/parallel.hpp"
 #include "../draw/draw_stages.hpp"
+#include "../draw/shading/depth_plane.hpp"
 #include "../draw/shading/plane_tiles.hpp"
 #include "query_bounds.hpp"
 
@@ -55,6 +56,10 @@ constexpr std::size_t kQueriesPerChunk = 256;
 // start costs little beside its 64 KiB of depths per 256 tiles.
 constexpr std::size_t kTilesPerTask = 4096;
 
+// Planes kept from call to call before they are forgotten (20 bytes each), unless the buffer has
+// more than a quarter as many tiles.
+constexpr std::size_t kKeptPlanes = std::size_t{1} << 20;
+
 }  // namespace
 
 OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height) : depth_(width, height) {
@@ -64,8 +69,8 @@ OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height) : dept
   }
   const std::size_t tiles = static_cast<std::size_t>(depth_.tiles_x()) * depth_.tiles_y();
   tile_max_.assign(tiles + detail::kTileMaximaPadding, -std::numeric_limits<float>::infinity());
-  planes_.resize(tiles);
-  slots_.resize(tiles);
+  plane_tiles_.resize(tiles);
+  plane_slots_.resize(tiles);
   clear();
 }
 
@@ -77,7 +82,8 @@ OcclusionBuffer::~OcclusionBuffer() = default;
 
 void OcclusionBuffer::clear() {
   depth_.clear(Vec4{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f);
-  std::fill(planes_.begin(), planes_.end(), detail::far_plane_tile());
+  std::fill(plane_tiles_.begin(), plane_tiles_.end(), detail::far_plane_tile());
+  planes_.assign(1, detail::kFarPlane);
   std::fill(tile_max_.begin(), tile_max_.end() - detail::kTileMaximaPadding, 1.0f);
 }
 
@@ -89,11 +95,15 @@ DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
     // The reference has no planes: it draws into the values, which then hold every tile's depth.
     const DrawReport report = draw(depth_, occluders, draw_options);
     refresh_depth(options, "draw_occluders", false);
-    forget_planes();
+    forget_planes(false);
     return report;
   }
+  // Planes are kept until clear(), a plane for each triangle a kernel call draws: past a bound,
+  // the tiles (their values resolved after the last call) forget theirs.
+  if (planes_.size() > std::max(kKeptPlanes, 4 * plane_tiles_.size())) forget_planes(true);
+  const detail::PlaneStore store{plane_tiles_.data(), plane_slots_.data(), &planes_};
   detail::DrawCall call = detail::prepare_draw(depth_, occluders, draw_options);
-  call.plane_tiles = {planes_.data(), slots_.data()};
+  call.plane_store = &store;
   const DrawReport report = detail::run_draw(call, depth_, occluders, draw_options);
   refresh_depth(options, "draw_occluders", true);
   return report;
@@ -114,7 +124,7 @@ void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOption
   const std::size_t values = (tile_max_.size() - detail::kTileMaximaPadding) * 64;
   std::copy_n(frame.depth_tiles(), values, depth_.depth_tiles());
   refresh_depth(options, "copy_depth", false);
-  forget_planes();
+  forget_planes(false);
 }
 
 Visibility OcclusionBuffer::test_triangles(const OcclusionMesh& mesh,
@@ -132,12 +142,10 @@ void OcclusionBuffer::refresh_depth(const OcclusionOptions& options, const char*
   // Written without invalidating the Framebuffer's own depth bounds: depth test less only ever
   // lowers values, so its bounds stay bounds.
   float* tiles = detail::FramebufferAccess::depth(depth_);
-  const std::size_t count = planes_.size();
+  const std::size_t count = plane_tiles_.size();
+  const detail::PlaneTiles planes{plane_tiles_.data(), plane_slots_.data(), planes_.data(), 0};
   const auto refresh = [&](std::size_t first, std::size_t last) {
-    if (resolve) {
-      kernels.resolve_plane_tiles({planes_.data(), slots_.data()}, tiles, depth_.tiles_x(), first,
-                                  last);
-    }
+    if (resolve) kernels.resolve_plane_tiles(planes, tiles, depth_.tiles_x(), first, last);
     kernels.occlusion_tile_maxima(tiles, first, last, tile_max_.data());
   };
   const std::size_t tasks = std::min(workers.threads, (count + kTilesPerTask - 1) / kTilesPerTask);
@@ -149,15 +157,18 @@ void OcclusionBuffer::refresh_depth(const OcclusionOptions& options, const char*
               [&](std::size_t task) { refresh(count * task / tasks, count * (task + 1) / tasks); });
 }
 
-void OcclusionBuffer::forget_planes() {
-  for (std::size_t t = 0; t < planes_.size(); ++t) {
-    detail::PlaneTile& tile = planes_[t];
+void OcclusionBuffer::forget_planes(bool keep_bounds) {
+  for (std::size_t t = 0; t < plane_tiles_.size(); ++t) {
+    detail::PlaneTile& tile = plane_tiles_[t];
     tile.kind = detail::TileKind::values;
     tile.unresolved = false;
-    // No lower bound is known without reading the tile; the maximum is exact.
-    tile.lowest = -std::numeric_limits<float>::infinity();
-    tile.highest = tile_max_[t];
+    if (!keep_bounds) {
+      // No lower bound is known without reading the tile; the maximum is exact.
+      tile.lowest = -std::numeric_limits<float>::infinity();
+      tile.highest = tile_max_[t];
+    }
   }
+  planes_.assign(1, detail::kFarPlane);
 }
 
 void OcclusionBuffer::test_rects(std::span<const OcclusionRect> rects, std::span<Visibility> out,

@@ -27,7 +27,7 @@ void resolve_plane_tiles(const detail::PlaneTiles& planes, float* depth_tiles, s
     detail::PlaneTile& tile = planes.tiles[t];
     if (tile.kind == detail::TileKind::values || !tile.unresolved) continue;
     write_plane_tile<Arch>(
-        tile, planes.slots[t], static_cast<std::int32_t>(t % columns) * kTileSize,
+        tile, planes.slots[t], planes.planes, static_cast<std::int32_t>(t % columns) * kTileSize,
         static_cast<std::int32_t>(t / columns) * kTileSize, depth_tiles + t * 64);
     tile.unresolved = false;
   }

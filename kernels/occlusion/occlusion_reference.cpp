@@ -42,11 +42,12 @@ void resolve_plane_tiles(const detail::PlaneTiles& planes, float* depth_tiles, s
     const auto px = static_cast<std::int32_t>(t % static_cast<std::size_t>(tiles_x)) * 8;
     const auto py = static_cast<std::int32_t>(t / static_cast<std::size_t>(tiles_x)) * 8;
     for (int bit = 0; bit < 64; ++bit) {
-      const detail::DepthPlane* plane = &tile.plane;
+      std::uint32_t plane = tile.plane;
       for (int s = 0; s < detail::kPlaneTileSlots && tile.kind == detail::TileKind::slots; ++s) {
-        if ((slots.mask[s] >> bit) & 1) plane = &slots.plane[s];
+        if ((slots.mask[s] >> bit) & 1) plane = slots.plane[s];
       }
-      depth_tiles[t * 64 + bit] = detail::depth_at(*plane, px + bit % 8, py + bit / 8);
+      depth_tiles[t * 64 + bit] =
+          detail::depth_at(planes.planes[plane], px + bit % 8, py + bit / 8);
     }
     tile.unresolved = false;
   }

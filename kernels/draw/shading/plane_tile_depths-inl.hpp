@@ -47,10 +47,11 @@ struct TilePlaneTerms {
 };
 
 // Writes the 64 depths of a tile kept as planes, whose first pixel is (px, py), to `depth`;
-// `slots` are the tile's, read when it has several planes.
+// `slots` are the tile's, read when it has several planes, which `planes` holds.
 template <class Arch>
 inline void write_plane_tile(const detail::PlaneTile& tile, const detail::PlaneSlots& slots,
-                             std::int32_t px, std::int32_t py, float* depth) {
+                             const detail::DepthPlane* planes, std::int32_t px, std::int32_t py,
+                             float* depth) {
   using Terms = TilePlaneTerms<Arch>;
   using Floats = typename Terms::Floats;
   constexpr std::size_t kLanes = Terms::kLanes, kParts = Terms::kParts;
@@ -60,8 +61,8 @@ inline void write_plane_tile(const detail::PlaneTile& tile, const detail::PlaneS
     while (slots.mask[first] == 0)
       ++first;
   }
-  const Terms everywhere(tile.kind == detail::TileKind::plane ? tile.plane : slots.plane[first], px,
-                         py);
+  const Terms everywhere(
+      planes[tile.kind == detail::TileKind::plane ? tile.plane : slots.plane[first]], px, py);
   for (int row = 0; row < kTileSize; ++row) {
     for (std::size_t h = 0; h < kParts; ++h)
       everywhere.depth(row, h).store_aligned(depth + row * kTileSize + h * kLanes);
@@ -69,7 +70,7 @@ inline void write_plane_tile(const detail::PlaneTile& tile, const detail::PlaneS
   if (tile.kind != detail::TileKind::slots) return;
   for (int s = first + 1; s < detail::kPlaneTileSlots; ++s) {
     if (slots.mask[s] == 0) continue;
-    const Terms terms(slots.plane[s], px, py);
+    const Terms terms(planes[slots.plane[s]], px, py);
     for (int row = 0; row < kTileSize; ++row) {
       const auto row_bits = static_cast<std::uint32_t>(slots.mask[s] >> (row * 8)) & 0xFFu;
       if (row_bits == 0) continue;

@@ -7,7 +7,10 @@
 // very float operations draw() would have written it with.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <stdexcept>
+#include <vector>
 
 #include "depth_plane.hpp"
 
@@ -18,44 +21,72 @@ inline constexpr int kPlaneTileSlots = 4;
 // What holds a tile's depths.
 enum class TileKind : std::uint8_t {
   values,  // the 64 values of the Framebuffer's tile, as draw() keeps them
-  plane,   // PlaneTile::plane, at every pixel
+  plane,   // plane PlaneTile::plane, at every pixel
   slots,   // the tile's PlaneSlots
 };
 
-// One tile: 32 bytes, so that the drawing of whole tiles, the common case, reads and writes
-// little. `lowest` and `highest` bound every depth of the tile, whatever holds them; they need
-// not be tight.
-struct alignas(32) PlaneTile {
-  DepthPlane plane;
+// One tile, 16 bytes, so that the drawing of whole tiles, the common case, reads and writes
+// little (half a megabyte at 1920x1080). Planes are named by their index in the buffer's array
+// of planes. `lowest` and `highest` bound every depth of the tile, whatever holds them; they
+// need not be tight.
+struct alignas(16) PlaneTile {
+  std::uint32_t plane;
   float lowest, highest;
   TileKind kind;
   bool unresolved;  // planes whose values the Framebuffer's tile does not hold yet
 };
-static_assert(sizeof(PlaneTile) == 32);
+static_assert(sizeof(PlaneTile) == 16);
 
 // The planes of a tile of kind slots: the masks are disjoint and together hold all 64 pixels
-// (bit y * 8 + x); a slot with an empty mask is free. One per tile, read only for tiles of that
-// kind.
+// (bit y * 8 + x); a slot with an empty mask is free. One cache line per tile, read only for
+// tiles of that kind.
 struct alignas(64) PlaneSlots {
   std::uint64_t mask[kPlaneTileSlots];
-  DepthPlane plane[kPlaneTileSlots];
+  std::uint32_t plane[kPlaneTileSlots];
 };
 
-// A buffer's tiles and their slots, in the Framebuffer's tile order.
-struct PlaneTiles {
-  PlaneTile* tiles = nullptr;
-  PlaneSlots* slots = nullptr;
-};
+// The far plane, depth 1 at every pixel: always plane 0 of a buffer.
+inline constexpr DepthPlane kFarPlane{1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
 
-// The far plane alone, depth 1 at every pixel: a cleared tile, whose values the Framebuffer's
-// cleared tile already holds.
+// A cleared tile, whose values the Framebuffer's cleared tile already holds.
 inline PlaneTile far_plane_tile() {
   PlaneTile tile{};
-  tile.plane = DepthPlane{1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  tile.plane = 0;
   tile.lowest = tile.highest = 1.0f;
   tile.kind = TileKind::plane;
   tile.unresolved = false;
   return tile;
 }
+
+// What one kernel call draws occluders into: a buffer's tiles and their slots, in the
+// Framebuffer's tile order, and its planes, where the call's triangle t writes its own as plane
+// first_plane + t.
+struct PlaneTiles {
+  PlaneTile* tiles = nullptr;
+  PlaneSlots* slots = nullptr;
+  DepthPlane* planes = nullptr;
+  std::uint32_t first_plane = 0;
+};
+
+// What draw() is given to draw occluders with: the tiles, and the planes, which it grows by
+// each kernel call's triangles before the calls run (reserve()), then hands each call its part
+// (view()).
+struct PlaneStore {
+  PlaneTile* tiles = nullptr;
+  PlaneSlots* slots = nullptr;
+  std::vector<DepthPlane>* planes = nullptr;
+
+  // Room for `count` more planes; returns the first. Throws std::length_error past 2^32 planes.
+  std::uint32_t reserve(std::size_t count) const {
+    const std::size_t first = planes->size();
+    if (count > std::size_t{UINT32_MAX} - first)
+      throw std::length_error("draw_occluders: more than 2^32 planes in one buffer");
+    planes->resize(first + count);
+    return static_cast<std::uint32_t>(first);
+  }
+  PlaneTiles view(std::uint32_t first_plane) const {
+    return {tiles, slots, planes->data(), first_plane};
+  }
+};
 
 }  // namespace edgewise::detail

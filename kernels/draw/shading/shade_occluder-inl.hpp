@@ -40,7 +40,11 @@ class OccluderVisitor {
   static constexpr std::size_t kGroupLanes = kSetupLanes<Arch>;
 
   explicit OccluderVisitor(const detail::ShadeBatch& batch)
-      : batch_(batch), tiles_(batch.plane_tiles.tiles), slots_(batch.plane_tiles.slots) {}
+      : batch_(batch),
+        tiles_(batch.plane_tiles.tiles),
+        slots_(batch.plane_tiles.slots),
+        planes_(batch.plane_tiles.planes),
+        first_plane_(batch.plane_tiles.first_plane) {}
 
   // The depth planes of a group of triangles (plane_setup-inl.hpp) and their depth bounds.
   void begin_group(const GroupCorners<Arch>& corners, const TriangleGroup<Arch>& positions) {
@@ -111,12 +115,14 @@ class OccluderVisitor {
     }
   }
 
-  // Triangle t, lane l of the last begin_group().
-  void begin_triangle(std::uint32_t, std::size_t l) {
+  // Triangle t, lane l of the last begin_group(): its plane stored as plane first_plane + t.
+  void begin_triangle(std::uint32_t t, std::size_t l) {
     plane_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
+    plane_index_ = first_plane_ + t;
+    planes_[plane_index_] = plane_;
     lowest_depth_ = lowest_[l];
     highest_depth_ = highest_[l];
-    whole_tile_.plane = plane_;
+    whole_tile_.plane = plane_index_;
     whole_tile_.lowest = lowest_depth_;
     whole_tile_.highest = highest_depth_;
     whole_tile_.kind = detail::TileKind::plane;
@@ -182,7 +188,7 @@ class OccluderVisitor {
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
     const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
     if (tile.kind != detail::TileKind::values) {
-      write_plane_tile<Arch>(tile, slots_[index], px, py, depth);
+      write_plane_tile<Arch>(tile, slots_[index], planes_, px, py, depth);
       tile.kind = detail::TileKind::values;
       tile.unresolved = false;
     }
@@ -215,7 +221,7 @@ class OccluderVisitor {
       slots.mask[0] = ~mask;
       slots.plane[0] = tile.plane;
       slots.mask[1] = mask;
-      slots.plane[1] = plane_;
+      slots.plane[1] = plane_index_;
       slots.mask[2] = slots.mask[3] = 0;
       tile.kind = detail::TileKind::slots;
     } else {
@@ -229,7 +235,7 @@ class OccluderVisitor {
       for (int s = 0; s < detail::kPlaneTileSlots; ++s)
         slots.mask[s] = left[s];
       slots.mask[free] = mask;
-      slots.plane[free] = plane_;
+      slots.plane[free] = plane_index_;
     }
     // The triangle's depths lie below the tile's lowest; the highest still bounds the rest.
     tile.lowest = lowest_depth_;
@@ -265,9 +271,12 @@ class OccluderVisitor {
   const detail::ShadeBatch& batch_;
   detail::PlaneTile* const tiles_;
   detail::PlaneSlots* const slots_;
+  detail::DepthPlane* const planes_;
+  const std::uint32_t first_plane_;
   PlaneGroup<Arch> group_;
   float lowest_[kGroupLanes], highest_[kGroupLanes];
   detail::DepthPlane plane_{};
+  std::uint32_t plane_index_ = 0;
   float lowest_depth_ = 0.0f, highest_depth_ = 1.0f;
   detail::PlaneTile whole_tile_{};  // a tile the triangle covers whole, in front of it
   std::uint64_t fragments_ = 0, passed_ = 0;

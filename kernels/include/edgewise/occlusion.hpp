@@ -38,6 +38,7 @@
 namespace edgewise {
 
 namespace detail {
+struct DepthPlane;
 struct PlaneTile;
 struct PlaneSlots;
 }  // namespace detail
@@ -131,15 +132,18 @@ class OcclusionBuffer {
   // Writes the values of tiles kept as planes into depth_ (with `resolve`), then rebuilds the
   // tile maxima.
   void refresh_depth(const OcclusionOptions& options, const char* caller, bool resolve);
-  // Every tile's depth now in depth_ alone (drawn or copied there).
-  void forget_planes();
+  // Every tile's depth now in depth_ alone: drawn or copied there (the bounds then rebuilt from
+  // the maxima), or, with `keep_bounds`, already resolved there.
+  void forget_planes(bool keep_bounds);
 
   // The depth target; its colour is never read (the reference's draw() writes one colour).
   Framebuffer depth_;
   // The depth as the SIMD kernels draw occluders into it: each tile as planes or as depth_'s
-  // values (kernels/draw/shading/plane_tiles.hpp).
-  std::vector<detail::PlaneTile> planes_;
-  std::vector<detail::PlaneSlots> slots_;
+  // values, and the planes the tiles name, the far plane first
+  // (kernels/draw/shading/plane_tiles.hpp).
+  std::vector<detail::PlaneTile> plane_tiles_;
+  std::vector<detail::PlaneSlots> plane_slots_;
+  std::vector<detail::DepthPlane> planes_;
   // The largest depth of each 8x8 tile, exact: rebuilt after every change of the depths.
   std::vector<float> tile_max_;
 };
