@@ -1,4 +1,4 @@
-// Depth kept as planes: an 8x8 tile of an occlusion buffer's depth held as up to four depth
+// Depth kept as planes: an 8x8 tile of an occlusion buffer's depth held as up to eight depth
 // planes (depth_plane.hpp), each with the mask of the pixels it owns, in place of 64 values.
 // Occluders drawn front to back cover whole tiles or parts of tiles that lie wholly in front of
 // what a tile holds; such a draw then changes a few masks and one plane instead of writing every
@@ -16,7 +16,7 @@
 
 namespace edgewise::detail {
 
-inline constexpr int kPlaneTileSlots = 4;
+inline constexpr int kPlaneTileSlots = 8;
 
 // What holds a tile's depths.
 enum class TileKind : std::uint8_t {
@@ -38,8 +38,8 @@ struct alignas(16) PlaneTile {
 static_assert(sizeof(PlaneTile) == 16);
 
 // The planes of a tile of kind slots: the masks are disjoint and together hold all 64 pixels
-// (bit y * 8 + x); a slot with an empty mask is free. One cache line per tile, read only for
-// tiles of that kind.
+// (bit y * 8 + x); a slot with an empty mask is free. Two cache lines per tile, read only for
+// tiles of that kind. Eight slots ran faster than four and than sixteen (docs/design/occlusion.md).
 struct alignas(64) PlaneSlots {
   std::uint64_t mask[kPlaneTileSlots];
   std::uint32_t plane[kPlaneTileSlots];

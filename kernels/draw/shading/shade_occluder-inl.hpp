@@ -222,7 +222,8 @@ class OccluderVisitor {
       slots.plane[0] = tile.plane;
       slots.mask[1] = mask;
       slots.plane[1] = plane_index_;
-      slots.mask[2] = slots.mask[3] = 0;
+      for (int free = 2; free < detail::kPlaneTileSlots; ++free)
+        slots.mask[free] = 0;
       tile.kind = detail::TileKind::slots;
     } else {
       std::uint64_t left[detail::kPlaneTileSlots];
