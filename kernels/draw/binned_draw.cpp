@@ -188,7 +188,7 @@ void shade_in_bins(DrawCall& call, Framebuffer& target, const ScreenMesh& screen
   const std::size_t triangles = screen.indices.size() / 3;
   const std::size_t ranges = binning_ranges(triangles, call.workers.threads);
   BinLists lists(ranges, grid.count());
-  const ShadeBatch whole = make_shade_batch(target, screen, options, call, texture);
+  const ShadeBatch whole = make_shade_batch(target, screen, options, call.clip, texture);
   std::vector<RasterReport> range_reports(ranges);
   call.workers.run(ranges, [&](std::size_t range) {
     bin_screen_triangles(whole.coverage, range * triangles / ranges,
@@ -237,7 +237,7 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
   std::vector<ShadeBatch> range_batches;
   range_batches.reserve(ranges);
   for (const ScreenMesh& screen : screens)
-    range_batches.push_back(make_shade_batch(target, screen, options, call, texture));
+    range_batches.push_back(make_shade_batch(target, screen, options, call.clip, texture));
   shade_bins(call, grid, lists, range_batches);
 }
 
@@ -360,7 +360,7 @@ void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh&
   std::optional<FlatTexture> flat;
   if (options.texture) flat.emplace(*options.texture->texture);
   const ShadeBatch whole =
-      make_shade_batch(target, screen, options, call, flat ? &flat->description() : nullptr);
+      make_shade_batch(target, screen, options, call.clip, flat ? &flat->description() : nullptr);
   // Every range's triangles index the one screen mesh.
   shade_bins(call, grid, lists, std::vector<ShadeBatch>(ranges, whole));
 }

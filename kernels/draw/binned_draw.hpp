@@ -7,11 +7,11 @@
 
 namespace edgewise::detail {
 
-// The kernels' view of a screen mesh under `options`, clipped to the call's clip rectangle;
-// `texture` is the call's texture flattened once (null without one). Plane tiles are given per
-// kernel call, with the planes reserved for it (PlaneStore).
+// The kernels' view of a screen mesh under `options`, clipped to `clip`; `texture` is the
+// call's texture flattened once (null without one). Plane tiles are given per kernel call, with
+// the planes reserved for it (PlaneStore).
 ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
-                            const DrawOptions& options, const DrawCall& call,
+                            const DrawOptions& options, const PixelRect& clip,
                             const TextureDescription* texture);
 
 // shade_screen_mesh() of a binned() call: the screen mesh's triangles binned in ranges, one task

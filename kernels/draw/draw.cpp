@@ -86,9 +86,8 @@ DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const Dra
 }
 
 ShadeBatch make_shade_batch(Framebuffer& target, const ScreenMesh& screen,
-                            const DrawOptions& options, const DrawCall& call,
+                            const DrawOptions& options, const PixelRect& clip,
                             const TextureDescription* texture) {
-  const PixelRect& clip = call.clip;
   ShadeBatch batch{{screen.positions.data(), screen.positions.size(), screen.indices.data(),
                     screen.indices.size() / 3, clip, options.cull, nullptr,
                     FramebufferAccess::sample_pattern(target)},
@@ -134,7 +133,7 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
     shade_in_bins(call, target, screen, options, texture);
     return;
   }
-  ShadeBatch batch = make_shade_batch(target, screen, options, call, texture);
+  ShadeBatch batch = make_shade_batch(target, screen, options, call.clip, texture);
   if (call.plane_store != nullptr) {
     batch.plane_tiles =
         call.plane_store->view(call.plane_store->reserve(batch.coverage.triangle_count));

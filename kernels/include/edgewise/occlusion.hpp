@@ -92,7 +92,10 @@ class OcclusionBuffer {
   // Every depth to 1: nothing is occluded.
   void clear();
 
-  // The mesh drawn as occluders: depth test less with writes; the report is draw()'s. Throws as
+  // The mesh drawn as occluders: depth test less with writes; the report's triangle and
+  // fragment counts are draw()'s. Drawn front to back, occluders are fastest: tiles they cover
+  // wholly in front are kept as their planes (docs/design/occlusion.md), 20 bytes per triangle
+  // drawn, kept until clear() (between calls, up to 2^20 planes or four per tile). Throws as
   // draw() does for inconsistent spans or options.
   DrawReport draw_occluders(const OcclusionMesh& mesh, const OcclusionOptions& options);
 
