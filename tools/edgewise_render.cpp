@@ -238,7 +238,7 @@ FrameTimes render_frames(Framebuffer& framebuffer, const DrawMesh& mesh, const D
     detail::DrawCall call = detail::prepare_draw(framebuffer, mesh, options);
     if (call.has_work()) {
       const auto map_start = Clock::now();
-      const detail::ScreenMesh screen = detail::map_to_screen(call, framebuffer, mesh, options);
+      const detail::ScreenMesh screen = detail::map_to_screen(call, mesh, options);
       vertex[r] = seconds_since(map_start);
       const auto shade_start = Clock::now();
       detail::shade_screen_mesh(call, framebuffer, screen, options);

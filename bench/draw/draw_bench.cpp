@@ -133,7 +133,7 @@ void draw_scene(benchmark::State& state, Isa isa, Camera camera, ShadingCase c,
       break;
     }
     const auto start = Clock::now();
-    const detail::ScreenMesh screen = detail::map_to_screen(call, target, mesh, options);
+    const detail::ScreenMesh screen = detail::map_to_screen(call, mesh, options);
     const auto mapped = Clock::now();
     detail::shade_screen_mesh(call, target, screen, options);
     benchmark::DoNotOptimize(target.color_tiles());

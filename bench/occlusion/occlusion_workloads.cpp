@@ -3,19 +3,20 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <utility>
 
 #include "../benchmarks.hpp"
 #include "fillrate_triangles.hpp"
 
 namespace edgewise::bench {
 
-const OcclusionBuffer& query_scene(Isa isa) {
+const OcclusionBuffer& query_scene(Isa isa, std::int32_t reduction) {
   static std::mutex mutex;
-  static std::map<Isa, std::unique_ptr<OcclusionBuffer>> scenes;
+  static std::map<std::pair<Isa, std::int32_t>, std::unique_ptr<OcclusionBuffer>> scenes;
   const std::lock_guard lock(mutex);
-  std::unique_ptr<OcclusionBuffer>& scene = scenes[isa];
+  std::unique_ptr<OcclusionBuffer>& scene = scenes[{isa, reduction}];
   if (!scene) {
-    scene = std::make_unique<OcclusionBuffer>(kWidth, kHeight);
+    scene = std::make_unique<OcclusionBuffer>(kWidth, kHeight, reduction);
     OcclusionOptions options;
     options.isa = isa;
     const FillrateTriangles& t = fillrate_triangles(kQuerySceneSize, kQuerySceneTriangles);

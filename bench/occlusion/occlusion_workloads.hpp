@@ -2,6 +2,7 @@
 // occluders (the fill-rate triangles of 50 px) and rectangles of 4 to 128 px at random depths.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "edgewise/isa.hpp"
@@ -9,8 +10,8 @@
 
 namespace edgewise::bench {
 
-// The 50-px fill-rate triangles drawn into a 1920x1080 buffer (once per ISA).
-const OcclusionBuffer& query_scene(Isa isa);
+// The 50-px fill-rate triangles drawn into a 1920x1080 buffer (once per ISA and reduction).
+const OcclusionBuffer& query_scene(Isa isa, std::int32_t reduction = 1);
 
 // 65,536 rectangles in pixels, each with a depth in the occluders' range.
 const std::vector<OcclusionRect>& query_rects();

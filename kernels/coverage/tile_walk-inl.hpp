@@ -64,7 +64,7 @@ class TileEvaluator {
   }
 
   // Bit (y * 8 + x) set when the sample at (x, y) of the block is covered. `g` holds each
-  // edge's G at the block's first sample, within +-2^29 (see the overflow analysis). All eight
+  // edge's G at the block's first sample, within +-2^30 (see the overflow analysis). All eight
   // rows are evaluated: a fixed trip count unrolls, and callers mask the rows they need.
   std::uint64_t coverage(const std::int32_t g[3]) const {
     const Lanes g0(g[0]), g1(g[1]), g2(g[2]);
@@ -110,7 +110,7 @@ class TileEvaluator {
 };
 
 inline std::int32_t clamp_to_tile_range(std::int64_t g) {
-  constexpr std::int64_t kLimit = std::int64_t{1} << 29;
+  constexpr std::int64_t kLimit = std::int64_t{1} << 30;
   return static_cast<std::int32_t>(g < -kLimit ? -kLimit : (g > kLimit ? kLimit : g));
 }
 inline std::int32_t clamp_to_tile_range(std::int32_t g) {

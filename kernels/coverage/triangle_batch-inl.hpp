@@ -5,11 +5,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <concepts>
 #include <type_traits>
 
 #include "edgewise/coverage.hpp"
 #include "triangle_batch.hpp"
 #include "../simd/lane_arch-inl.hpp"
+#include "block_setup-inl.hpp"
 #include "multisample_walk-inl.hpp"
 #include "span_walk-inl.hpp"
 #include "tile_walk-inl.hpp"
@@ -83,10 +85,39 @@ concept SelfWalkingVisitor = requires {
   Visitor::kWalksItself;
 };
 
-// walk_triangle(), or the multisample walk for a multisample visitor, or the visitor's own.
+// A visitor of a target that may be reduced (reduction(): 1, or the k of block_setup-inl.hpp).
+template <class Visitor>
+concept ReducingVisitor = requires(const Visitor& visitor) {
+  { visitor.reduction() } -> std::same_as<std::int32_t>;
+};
+
+// A triangle's blocks on a reduced target (reduce_setup()), by the block and tile walks.
+template <class Visitor>
+inline void walk_blocks(const TriangleSetup& view, std::int32_t reduction, Visitor& visitor) {
+  TriangleSetup setup;
+  if (!reduce_setup(view, reduction, setup)) return;
+  if (setup.narrow && setup.extent <= kTileSize) {
+    walk_block<Arch>(setup, visitor);
+  } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
+    walk_block_16<Arch>(setup, visitor);
+  } else if (setup.narrow) {
+    walk_tiles<Arch, std::int32_t>(setup, visitor);
+  } else {
+    walk_tiles<Arch, std::int64_t>(setup, visitor);
+  }
+}
+
+// walk_triangle(), or the multisample walk for a multisample visitor, or the visitor's own, or
+// the blocks' walk on a reduced target.
 template <class Visitor>
 inline void walk_visible(const detail::TriangleBatch& batch, const TriangleSetup& setup,
                          Visitor& visitor) {
+  if constexpr (ReducingVisitor<Visitor>) {
+    if (visitor.reduction() > 1) {
+      walk_blocks(setup, visitor.reduction(), visitor);
+      return;
+    }
+  }
   if constexpr (SelfWalkingVisitor<Visitor>) {
     visitor.walk(setup);
   } else if constexpr (MultisampleVisitor<Visitor>) {

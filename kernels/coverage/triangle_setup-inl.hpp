@@ -18,8 +18,9 @@
 //   G is the tile walk's edge function: integer, exact, steps A and B per pixel.
 //   Inside one 8x8 tile G varies by at most 7 (|A| + |B|) < 7 * 2^25 < 2^28 from its value at
 //   the tile's first sample, so per-tile lanes are 32-bit once that first value is clamped to
-//   [-2^29, 2^29]: a value beyond the clamp has the same sign at every sample of the tile, and
-//   clamped values stay within +-(2^29 + 2^28), far from int32 overflow.
+//   [-2^30, 2^30]: a value beyond the clamp has the same sign at every sample of the tile, and
+//   clamped values stay within +-(2^30 + 2^28), far from int32 overflow. (The clamp leaves room
+//   for the steps of reduced buffers' blocks, up to 2^26: block_setup-inl.hpp.)
 //   The walk itself steps G from tile to tile. Over the tiles of a triangle's clipped box
 //   (plus one step past the last tile, and 7 samples into each tile) G is affine, so
 //   |G| <= |G(origin)| + |A| reach_x + |B| reach_y; when that bound fits in int32 the whole walk

@@ -217,8 +217,7 @@ void draw_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh& mesh,
     part.report.triangles = last - first;
     ScreenMesh& screen = screens[range];
     GrowableArray<std::uint32_t> bins;
-    screen = map_to_screen(part, target, triangle_range(mesh, options, first, last), options, &grid,
-                           &bins);
+    screen = map_to_screen(part, triangle_range(mesh, options, first, last), options, &grid, &bins);
     vertex_reports[range] = part.report;
     const TriangleBatch batch = screen_triangles(
         target, screen, screen.indices.data(), screen.indices.size() / 3, call.clip, options.cull);
@@ -297,7 +296,7 @@ void draw_indexed_in_ranges(DrawCall& call, Framebuffer& target, const DrawMesh&
   const std::size_t vertices = mesh.positions.size();
   const std::size_t triangles = call.report.triangles;
   const std::size_t threads = call.workers.threads;
-  const VertexStageCall stage = vertex_stage_call(target, mesh, options, triangles);
+  const VertexStageCall stage = vertex_stage_call(call.view, mesh, options, triangles);
 
   // The mesh's vertices, a range per task (ranges of the binning's length), into one screen
   // mesh, each with its code.

@@ -80,6 +80,7 @@ DrawCall prepare_draw(const Framebuffer& target, const DrawMesh& mesh, const Dra
       RasterTarget{target.width(), target.height(), options.scissor}, "draw");
   call.workers = resolve_workers(options.threads, options.executor, "draw");
   call.samples = target.samples();
+  call.view = {target.width(), target.height()};
   const std::size_t corners = mesh.indices.empty() ? mesh.positions.size() : mesh.indices.size();
   call.report.triangles = corners / 3;
   return call;
@@ -168,7 +169,7 @@ DrawReport run_draw(DrawCall call, Framebuffer& target, const DrawMesh& mesh,
     }
     return call.report;
   }
-  const ScreenMesh screen = map_to_screen(call, target, mesh, options);
+  const ScreenMesh screen = map_to_screen(call, mesh, options);
   shade_screen_mesh(call, target, screen, options);
   return call.report;
 }

@@ -16,6 +16,9 @@ namespace edgewise::detail {
 struct DrawCall {
   const KernelTable* kernels = nullptr;
   PixelRect clip;
+  // The view the vertex stage maps to, in whose samples clip and set-up work: the target's size,
+  // or, for occluders drawn into a reduced buffer (PlaneStore::reduction), that many times it.
+  Viewport view;
   DrawReport report;  // isa and triangles filled in
   Workers workers;
   int samples = 1;  // the target's samples per pixel
@@ -37,8 +40,8 @@ DrawReport run_draw(DrawCall call, Framebuffer& target, const DrawMesh& mesh,
 // The vertex stage (vertex_stage.cpp, through the ISA's kernel): transform, clipping, screen
 // mapping and snapping of every triangle, and the culling of those set-up would cull, counted
 // into call.report. Given a grid, `bins` receives the bin of each screen triangle (BinOutput).
-ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
-                         const DrawOptions& options, const BinGrid* grid = nullptr,
+ScreenMesh map_to_screen(DrawCall& call, const DrawMesh& mesh, const DrawOptions& options,
+                         const BinGrid* grid = nullptr,
                          GrowableArray<std::uint32_t>* bins = nullptr);
 
 // The screen mesh through the ISA's shading kernel: setup, coverage, depth test and shading;

@@ -16,6 +16,7 @@
 #include "../draw/shading/depth_plane.hpp"
 #include "../draw/shading/plane_tiles.hpp"
 #include "query_bounds.hpp"
+#include "reduced_depth.hpp"
 
 namespace edgewise {
 namespace {
@@ -60,9 +61,48 @@ constexpr std::size_t kTilesPerTask = 4096;
 // more than a quarter as many tiles.
 constexpr std::size_t kKeptPlanes = std::size_t{1} << 20;
 
+// The counts of a call drawn outside draw()'s kernels, as shade_screen_mesh() adds them.
+void add_counts(DrawReport& report, const RasterReport& raster, const detail::ShadeCounts& counts) {
+  report.rasterized += raster.drawn;
+  report.culled += raster.culled;
+  report.errors += raster.errors;
+  report.fragments = counts.fragments;
+  report.fragments_passed = counts.passed;
+}
+
+// The screen mesh's triangles in the call's view, for the scalar loops of reduced buffers.
+detail::TriangleBatch view_triangles(const detail::DrawCall& call, const detail::ScreenMesh& screen,
+                                     CullMode cull) {
+  return {screen.positions.data(),
+          screen.positions.size(),
+          screen.indices.data(),
+          screen.indices.size() / 3,
+          call.clip,
+          cull,
+          nullptr};
+}
+
+std::int32_t checked_reduction(std::int32_t reduction) {
+  if (reduction != 1 && reduction != 2 && reduction != 4) {
+    throw std::invalid_argument("OcclusionBuffer: reduction " + std::to_string(reduction) +
+                                " is not 1, 2 or 4");
+  }
+  return reduction;
+}
+
+// Pixels of the buffer's depth along a side of `view` pixels (0 for a side out of range, which
+// the Framebuffer then rejects).
+std::int32_t reduced_side(std::int32_t view, std::int32_t reduction) {
+  return view < 1 || view > kMaxTargetSize ? view : (view + reduction - 1) / reduction;
+}
+
 }  // namespace
 
-OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height) : depth_(width, height) {
+OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height, std::int32_t reduction)
+    : width_(width),
+      height_(height),
+      reduction_(checked_reduction(reduction)),
+      depth_(reduced_side(width, reduction_), reduced_side(height, reduction_)) {
   if (width < 1 || height < 1) {
     throw std::invalid_argument("OcclusionBuffer: size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " has no pixel");
@@ -91,6 +131,12 @@ DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
                                            const OcclusionOptions& options) {
   const DrawMesh occluders = draw_mesh(mesh);
   const DrawOptions draw_options = occlusion_draw_options(options, true);
+  if (reduction_ > 1 && resolve_isa(options.isa) == Isa::reference) {
+    const DrawReport report = draw_blocks_reference(occluders, draw_options);
+    refresh_depth(options, "draw_occluders", false);
+    forget_planes(false);
+    return report;
+  }
   if (resolve_isa(options.isa) == Isa::reference) {
     // The reference has no planes: it draws into the values, which then hold every tile's depth.
     const DrawReport report = draw(depth_, occluders, draw_options);
@@ -101,12 +147,41 @@ DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
   // Planes are kept until clear(), a plane for each triangle a kernel call draws: past a bound,
   // the tiles (their values resolved after the last call) forget theirs.
   if (planes_.size() > std::max(kKeptPlanes, 4 * plane_tiles_.size())) forget_planes(true);
-  const detail::PlaneStore store{plane_tiles_.data(), plane_slots_.data(), &planes_};
-  detail::DrawCall call = detail::prepare_draw(depth_, occluders, draw_options);
+  const detail::PlaneStore store{plane_tiles_.data(), plane_slots_.data(), &planes_, reduction_};
+  detail::DrawCall call = prepare_view_draw(occluders, draw_options);
   call.plane_store = &store;
   const DrawReport report = detail::run_draw(call, depth_, occluders, draw_options);
   refresh_depth(options, "draw_occluders", true);
   return report;
+}
+
+detail::DrawCall OcclusionBuffer::prepare_view_draw(const DrawMesh& mesh,
+                                                    const DrawOptions& options) const {
+  detail::DrawCall call = detail::prepare_draw(depth_, mesh, options);
+  if (reduction_ > 1) {
+    // Drawn in the view, and walked in blocks of its samples (the buffer's pixels).
+    call.view = {width_, height_};
+    call.clip = PixelRect{0, 0, width_, height_};
+  }
+  return call;
+}
+
+DrawReport OcclusionBuffer::draw_blocks_reference(const DrawMesh& mesh,
+                                                  const DrawOptions& options) {
+  detail::DrawCall call = prepare_view_draw(mesh, options);
+  if (!call.has_work()) return call.report;
+  const detail::ScreenMesh screen = detail::map_to_screen(call, mesh, options);
+  const detail::TriangleBatch batch = view_triangles(call, screen, options.cull);
+  RasterReport raster;
+  detail::ShadeCounts counts;
+  detail::draw_block_occluders_reference(batch, screen.depth.data(), reduced_depth(), raster,
+                                         counts);
+  add_counts(call.report, raster, counts);
+  return call.report;
+}
+
+detail::ReducedDepth OcclusionBuffer::reduced_depth() {
+  return {detail::FramebufferAccess::depth(depth_), depth_.tiles_x(), reduction_};
 }
 
 void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOptions& options) {
@@ -120,16 +195,34 @@ void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOption
     throw std::invalid_argument("copy_depth: a frame of " + std::to_string(frame.samples()) +
                                 " samples per pixel; queries answer for one sample per pixel");
   }
-  // Same tiles, same layout.
-  const std::size_t values = (tile_max_.size() - detail::kTileMaximaPadding) * 64;
-  std::copy_n(frame.depth_tiles(), values, depth_.depth_tiles());
+  if (reduction_ > 1) {
+    detail::copy_block_maxima(frame, reduced_depth());
+  } else {
+    // Same tiles, same layout.
+    const std::size_t values = (tile_max_.size() - detail::kTileMaximaPadding) * 64;
+    std::copy_n(frame.depth_tiles(), values, depth_.depth_tiles());
+  }
   refresh_depth(options, "copy_depth", false);
   forget_planes(false);
 }
 
 Visibility OcclusionBuffer::test_triangles(const OcclusionMesh& mesh,
                                            const OcclusionOptions& options) {
-  const DrawReport report = draw(depth_, draw_mesh(mesh), occlusion_draw_options(options, false));
+  const DrawMesh object = draw_mesh(mesh);
+  const DrawOptions draw_options = occlusion_draw_options(options, false);
+  if (reduction_ > 1) {
+    // The view's samples, each against its block: a few triangles, scalar.
+    detail::DrawCall call = prepare_view_draw(object, draw_options);
+    if (!call.has_work()) return Visibility::outside;
+    const detail::ScreenMesh screen = detail::map_to_screen(call, object, draw_options);
+    const detail::TriangleBatch batch = view_triangles(call, screen, draw_options.cull);
+    RasterReport raster;
+    detail::ShadeCounts counts;
+    if (detail::some_sample_passes(batch, screen.depth.data(), reduced_depth(), raster, counts))
+      return Visibility::visible;
+    return counts.fragments == 0 ? Visibility::outside : Visibility::occluded;
+  }
+  const DrawReport report = draw(depth_, object, draw_options);
   if (report.fragments == 0) return Visibility::outside;
   return report.fragments_passed > 0 ? Visibility::visible : Visibility::occluded;
 }
@@ -180,7 +273,7 @@ void OcclusionBuffer::test_rects(std::span<const OcclusionRect> rects, std::span
   for (std::size_t first = 0; first < rects.size(); first += kQueriesPerChunk) {
     const std::size_t count = std::min(kQueriesPerChunk, rects.size() - first);
     for (std::size_t i = 0; i < count; ++i)
-      samples[i] = detail::rect_samples(rects[first + i], width(), height(), first + i);
+      samples[i] = blocks_of(detail::rect_samples(rects[first + i], width(), height(), first + i));
     kernels.test_sample_rects(depth, samples.data(), count, out.data() + first);
   }
 }
@@ -199,7 +292,7 @@ void OcclusionBuffer::test_boxes(std::span<const OcclusionBox> boxes, const Mat4
     for (std::size_t i = 0; i < count; ++i) {
       const detail::BoxSamples box =
           detail::box_samples(boxes[first + i], transform, viewport, planes, first + i);
-      samples[i] = box.samples;  // empty, so outside, unless bounded
+      samples[i] = blocks_of(box.samples);  // empty, so outside, unless bounded
       unbounded[i] = box.reach == detail::BoxReach::unbounded;
     }
     kernels.test_sample_rects(depth, samples.data(), count, out.data() + first);
@@ -207,6 +300,17 @@ void OcclusionBuffer::test_boxes(std::span<const OcclusionBox> boxes, const Mat4
       if (unbounded[i]) out[first + i] = Visibility::visible;
     }
   }
+}
+
+detail::SampleRect OcclusionBuffer::blocks_of(detail::SampleRect samples) const {
+  if (reduction_ > 1 && samples.x0 <= samples.x1 && samples.y0 <= samples.y1) {
+    // The blocks that hold the samples (non-negative: plain division rounds down).
+    samples.x0 /= reduction_;
+    samples.y0 /= reduction_;
+    samples.x1 /= reduction_;
+    samples.y1 /= reduction_;
+  }
+  return samples;
 }
 
 std::string_view name_of(Visibility value) {

@@ -7,7 +7,10 @@
 //   (or an ISA throws where the brute force finds a bad rectangle, or the reverse);
 // - a box's answer differs between an ISA and the reference;
 // - a box is answered occluded while its twelve faces drawn with depth test less show a sample
-//   (test_triangles(), the oracle), or outside while they cover one.
+//   (test_triangles(), the oracle), or outside while they cover one;
+// - in buffers reduced 2 and 4 times: the blocks differ in any bit from the reference's, a block
+//   lies below the full-resolution depth of one of its pixels, or a rectangle or box is answered
+//   occluded where the full-resolution answer is visible, or outside where it is not.
 //
 // Input layout (missing bytes read as zero):
 //   u8 width, u8 height            1 + v % 48 each
@@ -168,6 +171,71 @@ bool box_is_valid(const OcclusionBox& b) {
   return b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z;
 }
 
+// An answer on a reduced buffer that the full-resolution one contradicts: occluded where that is
+// visible, or outside where that is not (or the reverse).
+bool contradicts(Visibility reduced, Visibility full) {
+  return (reduced == Visibility::outside) != (full == Visibility::outside) ||
+         (reduced == Visibility::occluded && full == Visibility::visible);
+}
+
+// The reduced buffers of every ISA against the reference's, and against the full-resolution
+// depth `full` and answers.
+void check_reduced(const Input& input, std::int32_t k, const std::vector<float>& full,
+                   const std::vector<OcclusionBox>& boxes,
+                   const std::vector<Visibility>& full_boxes,
+                   const std::vector<Visibility>& full_faces) {
+  OcclusionOptions options;
+  options.transform = input.transform;
+  options.threads = 1;
+  options.isa = Isa::reference;
+  OcclusionBuffer reference(input.width, input.height, k);
+  reference.draw_occluders({input.occluders, {}}, options);
+  std::vector<float> want(static_cast<std::size_t>(reference.depth_width()) *
+                          reference.depth_height());
+  reference.read_depth(want);
+  const std::string reduced = "reduced " + std::to_string(k) + ": ";
+  for (std::int32_t y = 0; y < input.height; ++y) {
+    for (std::int32_t x = 0; x < input.width; ++x) {
+      const float block = want[static_cast<std::size_t>(y / k) * reference.depth_width() + x / k];
+      if (!(block >= full[static_cast<std::size_t>(y) * input.width + x]))
+        finding(input, reduced + "block below the depth of pixel (" + std::to_string(x) + ", " +
+                           std::to_string(y) + ")");
+    }
+  }
+  std::vector<float> got(want.size());
+  for (const Isa isa : supported_isas()) {
+    options.isa = isa;
+    OcclusionBuffer buffer(input.width, input.height, k);
+    buffer.draw_occluders({input.occluders, {}}, options);
+    buffer.read_depth(got);
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      if (std::bit_cast<std::uint32_t>(got[i]) != std::bit_cast<std::uint32_t>(want[i]))
+        finding(input, reduced + std::string(name_of(isa)) + ": depth differs at block " +
+                           std::to_string(i));
+    }
+    for (std::size_t i = 0; i < input.rects.size(); ++i) {
+      const std::optional<Visibility> expected =
+          brute_force(full, input.width, input.height, input.rects[i]);
+      if (!expected) continue;  // refused, as at full resolution
+      Visibility answer = Visibility::visible;
+      buffer.test_rects(std::span(input.rects).subspan(i, 1), std::span(&answer, 1), isa);
+      if (contradicts(answer, *expected))
+        finding(input, reduced + std::string(name_of(isa)) + ": rectangle " + std::to_string(i));
+    }
+    std::vector<Visibility> answers(boxes.size());
+    buffer.test_boxes(boxes, input.transform, answers, isa);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      if (contradicts(answers[i], full_boxes[i]))
+        finding(input, reduced + std::string(name_of(isa)) + ": box " + std::to_string(i));
+      const std::vector<Vec3> faces = box_faces(boxes[i]);
+      options.isa = isa;
+      const Visibility triangles = buffer.test_triangles({faces, {}}, options);
+      if (contradicts(triangles, full_faces[i]))
+        finding(input, reduced + std::string(name_of(isa)) + ": faces of box " + std::to_string(i));
+    }
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -187,9 +255,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   std::vector<Visibility> reference_boxes(valid_boxes.size());
   reference.test_boxes(valid_boxes, input.transform, reference_boxes, Isa::reference);
+  std::vector<Visibility> face_oracles;
   for (std::size_t i = 0; i < valid_boxes.size(); ++i) {
     const std::vector<Vec3> faces = box_faces(valid_boxes[i]);
     const Visibility oracle = reference.test_triangles({faces, {}}, options);
+    face_oracles.push_back(oracle);
     if (oracle == Visibility::visible && reference_boxes[i] != Visibility::visible)
       finding(input, "box " + std::to_string(i) + " hidden, but its faces show a sample");
     if (reference_boxes[i] == Visibility::outside && oracle != Visibility::outside)
@@ -222,5 +292,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     buffer.test_boxes(valid_boxes, input.transform, boxes, isa);
     if (boxes != reference_boxes) finding(input, std::string(name_of(isa)) + ": box answers");
   }
+  for (const std::int32_t k : {2, 4})
+    check_reduced(input, k, want, valid_boxes, reference_boxes, face_oracles);
   return 0;
 }

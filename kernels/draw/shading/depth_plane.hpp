@@ -19,6 +19,7 @@
 // again exact (multiples of 2^-8 below 2^16 in magnitude); offset (0, 0) is the centre's formula.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "edgewise/vector.hpp"
@@ -64,6 +65,31 @@ inline float depth_at(const DepthPlane& plane, std::int32_t px, std::int32_t py,
                       std::int32_t sx = 0, std::int32_t sy = 0) {
   const float dx = ((static_cast<float>(px) + 0.5f) + sixteenths(sx)) - plane.x0;
   return clamp_depth(depth_row_base(plane, py, sy) + plane.dzdx * dx);
+}
+
+// On a target reduced k times on each axis (k = 2 or 4), whose pixel (X, Y) stands for the
+// view's samples (kX + i, kY + j), 0 <= i, j < k: the plane whose depth_at(X, Y) is the largest
+// (`farthest`) or the least of depth_at() of `plane` over those samples. Each of the formula's
+// roundings keeps the order of its operands, so the computed depth is monotone in dx and in dy
+// and its extremes lie at the corner the slopes' signs choose, sample (i, j). That sample's
+// depth is computed bit for bit: with x0' = (x0 - (i + 0.5) + k / 2) / k and dzdx' = k dzdx,
+// dx' = (X + 0.5) - x0' is exactly the view's dx / k (x0 is a multiple of 2^-8 below 2^15, so
+// x0' and dx' have at most 24 significant bits, and k is a power of two), and dzdx' dx' rounds
+// the same product as the view's dzdx dx; the same for y. Slopes that k times over would not be
+// finite give the far plane (depth 1 everywhere: nothing behind it is occluded).
+inline DepthPlane block_depth_plane(const DepthPlane& plane, std::int32_t k, bool farthest) {
+  const float kf = static_cast<float>(k);
+  const float dzdx = plane.dzdx * kf, dzdy = plane.dzdy * kf;
+  if (std::isfinite(plane.dzdx) && std::isfinite(plane.dzdy) &&
+      !(std::isfinite(dzdx) && std::isfinite(dzdy))) {
+    return {1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  }
+  const double i = (plane.dzdx > 0.0f) == farthest ? k - 1 : 0;
+  const double j = (plane.dzdy > 0.0f) == farthest ? k - 1 : 0;
+  const double half = 0.5 * k;
+  return {plane.z0, dzdx, dzdy,
+          static_cast<float>((static_cast<double>(plane.x0) - (i + 0.5) + half) / k),
+          static_cast<float>((static_cast<double>(plane.y0) - (j + 0.5) + half) / k)};
 }
 
 }  // namespace edgewise::detail

@@ -60,12 +60,15 @@ inline PlaneTile far_plane_tile() {
 
 // What one kernel call draws occluders into: a buffer's tiles and their slots, in the
 // Framebuffer's tile order, and its planes, where the call's triangle t writes its own as plane
-// first_plane + t.
+// first_plane + t. On a reduced buffer (`reduction` 2 or 4), a pixel of the tiles stands for a
+// block of reduction x reduction samples of the view (docs/design/occlusion.md, "Reduced
+// resolution"); the triangles are the view's.
 struct PlaneTiles {
   PlaneTile* tiles = nullptr;
   PlaneSlots* slots = nullptr;
   DepthPlane* planes = nullptr;
   std::uint32_t first_plane = 0;
+  std::int32_t reduction = 1;
 };
 
 // What draw() is given to draw occluders with: the tiles, and the planes, which it grows by
@@ -75,6 +78,7 @@ struct PlaneStore {
   PlaneTile* tiles = nullptr;
   PlaneSlots* slots = nullptr;
   std::vector<DepthPlane>* planes = nullptr;
+  std::int32_t reduction = 1;
 
   // Room for `count` more planes; returns the first. Throws std::length_error past 2^32 planes.
   std::uint32_t reserve(std::size_t count) const {
@@ -85,7 +89,7 @@ struct PlaneStore {
     return static_cast<std::uint32_t>(first);
   }
   PlaneTiles view(std::uint32_t first_plane) const {
-    return {tiles, slots, planes->data(), first_plane};
+    return {tiles, slots, planes->data(), first_plane, reduction};
   }
 };
 

@@ -44,7 +44,12 @@ class OccluderVisitor {
         tiles_(batch.plane_tiles.tiles),
         slots_(batch.plane_tiles.slots),
         planes_(batch.plane_tiles.planes),
-        first_plane_(batch.plane_tiles.first_plane) {}
+        first_plane_(batch.plane_tiles.first_plane),
+        reduction_(batch.plane_tiles.reduction) {}
+
+  // On a reduced buffer the walk hands on blocks, each covered when all its samples are
+  // (triangle_batch-inl.hpp), and each takes the largest depth of its samples.
+  std::int32_t reduction() const { return reduction_; }
 
   // The depth planes of a group of triangles (plane_setup-inl.hpp) and their depth bounds.
   void begin_group(const GroupCorners<Arch>& corners, const TriangleGroup<Arch>& positions) {
@@ -101,13 +106,14 @@ class OccluderVisitor {
                  ? (v < static_cast<float>(hi) ? static_cast<std::int32_t>(v) : hi - 1)
                  : lo;
     };
+    const std::int32_t tile_side = kTileSize * reduction_;  // in the view's samples
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t v = corners[i] < vertices ? corners[i] : vertices - 1;
       const Vec2 p = batch_.coverage.vertices[v];
       const std::size_t index =
-          static_cast<std::size_t>(inside(p.y, clip.y0, clip.y1) / kTileSize) *
+          static_cast<std::size_t>(inside(p.y, clip.y0, clip.y1) / tile_side) *
               static_cast<std::size_t>(batch_.tiles_x) +
-          static_cast<std::size_t>(inside(p.x, clip.x0, clip.x1) / kTileSize);
+          static_cast<std::size_t>(inside(p.x, clip.x0, clip.x1) / tile_side);
       __builtin_prefetch(tiles_ + index, 1);
       const float* depth = batch_.depth_tiles + index * 64;
       for (int line = 0; line < 4; ++line)
@@ -118,10 +124,16 @@ class OccluderVisitor {
   // Triangle t, lane l of the last begin_group(): its plane stored as plane first_plane + t.
   void begin_triangle(std::uint32_t t, std::size_t l) {
     plane_ = {group_.z0[l], group_.dzdx[l], group_.dzdy[l], group_.x0[l], group_.y0[l]};
-    plane_index_ = first_plane_ + t;
-    planes_[plane_index_] = plane_;
     lowest_depth_ = lowest_[l];
     highest_depth_ = highest_[l];
+    if (reduction_ > 1) {
+      // A block's depth is one of its samples' (covered, so within the bounds), or 1.
+      plane_ = detail::block_depth_plane(plane_, reduction_, /*farthest=*/true);
+      if (plane_.dzdx == 0.0f && plane_.dzdy == 0.0f && plane_.z0 == 1.0f)
+        lowest_depth_ = highest_depth_ = 1.0f;
+    }
+    plane_index_ = first_plane_ + t;
+    planes_[plane_index_] = plane_;
     whole_tile_.plane = plane_index_;
     whole_tile_.lowest = lowest_depth_;
     whole_tile_.highest = highest_depth_;
@@ -274,6 +286,7 @@ class OccluderVisitor {
   detail::PlaneSlots* const slots_;
   detail::DepthPlane* const planes_;
   const std::uint32_t first_plane_;
+  const std::int32_t reduction_;
   PlaneGroup<Arch> group_;
   float lowest_[kGroupLanes], highest_[kGroupLanes];
   detail::DepthPlane plane_{};

@@ -106,13 +106,12 @@ float snap(float v) {
   return static_cast<float>(rounded / 256.0);
 }
 
-VertexStageCall vertex_stage_call(const Framebuffer& target, const DrawMesh& mesh,
+VertexStageCall vertex_stage_call(const Viewport& view, const DrawMesh& mesh,
                                   const DrawOptions& options, std::size_t triangles) {
-  const Viewport viewport{target.width(), target.height()};
   return {mesh,
           options.transform,
-          viewport,
-          guard_band_planes(viewport),
+          view,
+          guard_band_planes(view),
           options.shading == Shading::diffuse,
           options.texture.has_value(),
           triangles};
@@ -182,12 +181,12 @@ SampleWindow sample_window(const PixelRect& clip, int samples) {
   return {clip, samples > 1 ? 128 : 0};
 }
 
-ScreenMesh map_to_screen(DrawCall& call, const Framebuffer& target, const DrawMesh& mesh,
-                         const DrawOptions& options, const BinGrid* grid,
-                         GrowableArray<std::uint32_t>* bins) {
+ScreenMesh map_to_screen(DrawCall& call, const DrawMesh& mesh, const DrawOptions& options,
+                         const BinGrid* grid, GrowableArray<std::uint32_t>* bins) {
   ScreenMesh screen;
-  run_vertex_stage(*call.kernels, vertex_stage_call(target, mesh, options, call.report.triangles),
-                   screen, call.report);
+  run_vertex_stage(*call.kernels,
+                   vertex_stage_call(call.view, mesh, options, call.report.triangles), screen,
+                   call.report);
   BinOutput output;
   if (grid != nullptr) output = {grid, bins->extend(screen.indices.size() / 3)};
   drop_culled_triangles(*call.kernels, screen, screen, options.cull,

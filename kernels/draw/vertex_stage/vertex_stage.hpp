@@ -33,8 +33,8 @@ struct VertexStageCall {
 // non-finite ones pass through unchanged. Every vertex the shading kernels see has been snapped so.
 float snap(float v);
 
-// The vertex stage of a draw() call on `target` (its viewport and guard band).
-VertexStageCall vertex_stage_call(const Framebuffer& target, const DrawMesh& mesh,
+// The vertex stage of a draw() call in `view` (DrawCall::view), with its guard band.
+VertexStageCall vertex_stage_call(const Viewport& view, const DrawMesh& mesh,
                                   const DrawOptions& options, std::size_t triangles);
 
 // Sizes `out` for the mesh's vertices (positions, depth, w and, for a mesh without colours, the

@@ -38,6 +38,9 @@
 namespace edgewise {
 
 namespace detail {
+struct DrawCall;
+struct ReducedDepth;
+struct SampleRect;
 struct DepthPlane;
 struct PlaneTile;
 struct PlaneSlots;
@@ -78,16 +81,30 @@ struct OcclusionBox {
 
 class OcclusionBuffer {
  public:
-  // Sides 1 .. kMaxTargetSize (coverage.hpp); throws std::invalid_argument otherwise.
-  OcclusionBuffer(std::int32_t width, std::int32_t height);
+  // A view of width x height pixels, sides 1 .. kMaxTargetSize (coverage.hpp). With `reduction`
+  // 2 or 4 the buffer keeps one depth per block of reduction x reduction pixels of the view (a
+  // quarter or a sixteenth of the memory), and what it answers stays conservative: a block
+  // holds at least every depth that the full-resolution buffer would hold at its pixels
+  // (docs/design/occlusion.md, "Reduced resolution"). Occluders then set a block only where one
+  // triangle covers all its pixels, to the largest depth it has there; copy_depth() takes each
+  // block's largest depth; queries test the blocks that hold their pixels. Throws
+  // std::invalid_argument for another size or reduction.
+  OcclusionBuffer(std::int32_t width, std::int32_t height, std::int32_t reduction = 1);
   OcclusionBuffer(const OcclusionBuffer&);
   OcclusionBuffer(OcclusionBuffer&&) noexcept;
   OcclusionBuffer& operator=(const OcclusionBuffer&);
   OcclusionBuffer& operator=(OcclusionBuffer&&) noexcept;
   ~OcclusionBuffer();
 
-  std::int32_t width() const { return depth_.width(); }
-  std::int32_t height() const { return depth_.height(); }
+  // The view's size, in pixels.
+  std::int32_t width() const { return width_; }
+  std::int32_t height() const { return height_; }
+  // Pixels of the view per depth on each axis: 1, 2 or 4.
+  std::int32_t reduction() const { return reduction_; }
+  // The depths kept per row and per column: the view's sides divided by the reduction, rounded
+  // up (a last block may hold fewer of the view's pixels).
+  std::int32_t depth_width() const { return depth_.width(); }
+  std::int32_t depth_height() const { return depth_.height(); }
 
   // Every depth to 1: nothing is occluded.
   void clear();
@@ -101,12 +118,15 @@ class OcclusionBuffer {
 
   // The depth of a frame already drawn in place of the buffer's: occluders drawn as the first
   // objects of a frame, or by a depth pre-pass, serve as they are. Throws std::invalid_argument
-  // when the frame's size is not the buffer's, or when it is multisampled (a query answers for
-  // pixel centres, and an object may reach another sample of a pixel without its centre).
+  // when the frame's size is not the view's, or when it is multisampled (a query answers for
+  // pixel centres, and an object may reach another sample of a pixel without its centre). A
+  // reduced buffer keeps each block's largest depth.
   void copy_depth(const Framebuffer& frame, const OcclusionOptions& options = {});
 
   // Exact: visible when draw() of the mesh with depth test less would pass a sample, outside when
-  // it would cover none, occluded otherwise. The depths are left unchanged.
+  // it would cover none, occluded otherwise. On a reduced buffer, visible when a sample that
+  // draw() would cover has a depth below its block's (the samples tested one by one on the
+  // calling thread: for objects of few triangles). The depths are left unchanged.
   Visibility test_triangles(const OcclusionMesh& mesh, const OcclusionOptions& options);
 
   // One answer per rectangle: outside when it holds no pixel centre of the view or its depth
@@ -126,8 +146,8 @@ class OcclusionBuffer {
   void test_boxes(std::span<const OcclusionBox> boxes, const Mat4& transform,
                   std::span<Visibility> out, std::optional<Isa> isa = std::nullopt) const;
 
-  // The stored depth of pixel (x, y) (unchecked), and every depth row-major (as
-  // Framebuffer::read_depth()).
+  // The stored depth of pixel (x, y) (unchecked), or of block (x, y) of a reduced buffer, and
+  // every depth row-major (depth_width() x depth_height(), as Framebuffer::read_depth()).
   float depth(std::int32_t x, std::int32_t y) const { return depth_.depth(x, y); }
   void read_depth(std::span<float> depth) const { depth_.read_depth(depth); }
 
@@ -138,6 +158,15 @@ class OcclusionBuffer {
   // Every tile's depth now in depth_ alone: drawn or copied there (the bounds then rebuilt from
   // the maxima), or, with `keep_bounds`, already resolved there.
   void forget_planes(bool keep_bounds);
+  // prepare_draw() for the view (a reduced buffer's draws run in the view's samples).
+  detail::DrawCall prepare_view_draw(const DrawMesh& mesh, const DrawOptions& options) const;
+  // Occluders into a reduced buffer by the scalar reference.
+  DrawReport draw_blocks_reference(const DrawMesh& mesh, const DrawOptions& options);
+  detail::ReducedDepth reduced_depth();
+  // A range of the view's samples as the range of blocks that hold them.
+  detail::SampleRect blocks_of(detail::SampleRect samples) const;
+
+  std::int32_t width_, height_, reduction_;
 
   // The depth target; its colour is never read (the reference's draw() writes one colour).
   Framebuffer depth_;

@@ -1,0 +1,113 @@
+// Reduced occlusion depth, scalar (reduced_depth.hpp): written for clarity from the definitions,
+// sharing nothing with the kernels' block walk but the depth formula and the reference's
+// coverage test.
+#include "reduced_depth.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "../coverage/coverage_reference.hpp"
+#include "../draw/shading/depth_plane.hpp"
+
+namespace edgewise::detail {
+namespace {
+
+float& depth_of(const ReducedDepth& depth, std::int32_t x, std::int32_t y) {
+  const std::size_t tile = static_cast<std::size_t>(y / kTileSize) * depth.tiles_x + x / kTileSize;
+  return depth.tiles[tile * 64 + (y % kTileSize) * kTileSize + x % kTileSize];
+}
+
+DepthPlane plane_of(const TriangleBatch& batch, const float* vertex_depth, std::size_t t) {
+  Vec2 p[3];
+  float z[3];
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t v = batch.indices != nullptr ? batch.indices[3 * t + i] : 3 * t + i;
+    p[i] = batch.vertices[v];
+    z[i] = vertex_depth[v];
+  }
+  return make_depth_plane(p, z);
+}
+
+// The blocks that may hold a sample of `pixels` (pixels of the view).
+PixelRect blocks_of(const PixelRect& pixels, std::int32_t k) {
+  return {pixels.x0 / k, pixels.y0 / k, (pixels.x1 + k - 1) / k, (pixels.y1 + k - 1) / k};
+}
+
+// Slopes that k times over are not finite: the kernels draw such a triangle at depth 1
+// (block_depth_plane()).
+bool block_slopes_overflow(const DepthPlane& plane, std::int32_t k) {
+  const float kf = static_cast<float>(k);
+  return std::isfinite(plane.dzdx) && std::isfinite(plane.dzdy) &&
+         !(std::isfinite(plane.dzdx * kf) && std::isfinite(plane.dzdy * kf));
+}
+
+}  // namespace
+
+void draw_block_occluders_reference(const TriangleBatch& batch, const float* vertex_depth,
+                                    const ReducedDepth& depth, RasterReport& report,
+                                    ShadeCounts& counts) {
+  const std::int32_t k = depth.reduction;
+  reference::for_each_drawn_triangle(
+      batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
+        const DepthPlane plane = plane_of(batch, vertex_depth, t);
+        const PixelRect blocks = blocks_of(reference::candidate_pixels(snapped, batch.clip), k);
+        for (std::int32_t y = blocks.y0; y < blocks.y1; ++y) {
+          for (std::int32_t x = blocks.x0; x < blocks.x1; ++x) {
+            bool whole = true;
+            float farthest = 0.0f;
+            for (std::int32_t j = 0; j < k; ++j) {
+              for (std::int32_t i = 0; i < k; ++i) {
+                whole = whole && reference::covers(snapped, k * x + i, k * y + j);
+                farthest = std::max(farthest, depth_at(plane, k * x + i, k * y + j));
+              }
+            }
+            if (!whole) continue;
+            if (block_slopes_overflow(plane, k)) farthest = 1.0f;
+            ++counts.fragments;
+            float& stored = depth_of(depth, x, y);
+            if (farthest < stored) {
+              stored = farthest;
+              ++counts.passed;
+            }
+          }
+        }
+      });
+}
+
+bool some_sample_passes(const TriangleBatch& batch, const float* vertex_depth,
+                        const ReducedDepth& depth, RasterReport& report, ShadeCounts& counts) {
+  const std::int32_t k = depth.reduction;
+  bool passes = false;
+  reference::for_each_drawn_triangle(
+      batch, report, [&](std::size_t t, const reference::SnappedTriangle& snapped) {
+        if (passes) return;
+        const DepthPlane plane = plane_of(batch, vertex_depth, t);
+        const PixelRect pixels = reference::candidate_pixels(snapped, batch.clip);
+        for (std::int32_t y = pixels.y0; y < pixels.y1 && !passes; ++y) {
+          for (std::int32_t x = pixels.x0; x < pixels.x1 && !passes; ++x) {
+            if (!reference::covers(snapped, x, y)) continue;
+            ++counts.fragments;
+            passes = depth_at(plane, x, y) < depth_of(depth, x / k, y / k);
+          }
+        }
+      });
+  counts.passed = passes ? 1 : 0;
+  return passes;
+}
+
+void copy_block_maxima(const Framebuffer& frame, const ReducedDepth& depth) {
+  const std::int32_t k = depth.reduction;
+  const std::int32_t width = frame.width(), height = frame.height();
+  for (std::int32_t y = 0; y < (height + k - 1) / k; ++y) {
+    for (std::int32_t x = 0; x < (width + k - 1) / k; ++x) {
+      float farthest = 0.0f;
+      for (std::int32_t j = k * y; j < std::min(k * y + k, height); ++j) {
+        for (std::int32_t i = k * x; i < std::min(k * x + k, width); ++i)
+          farthest = std::max(farthest, frame.depth(i, j));
+      }
+      depth_of(depth, x, y) = farthest;
+    }
+  }
+}
+
+}  // namespace edgewise::detail
