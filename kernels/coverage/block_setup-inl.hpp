@@ -6,7 +6,9 @@
 // Exactness: the view's G is exact and affine, G(kX + i, kY + j) = G(kX, kY) + A i + B j, so
 // over a block it is least at i = (k - 1) [A < 0], j = (k - 1) [B < 0]; that least value, taken
 // as the block's G, steps by exactly k A and k B from block to block, and is at least 0 for all
-// three edges exactly when the view's rule covers all k x k samples.
+// three edges exactly when the view's rule covers all k x k samples. Its largest value, at the
+// opposite corner, finds the blocks where each edge holds some sample: every block with a
+// covered sample among them.
 //
 // Overflow (triangle_setup-inl.hpp's analysis, steps k times larger): |A|, |B| < 2^24, so the
 // steps k A, k B lie below 2^26 for k <= 4. Inside a tile G varies by at most
@@ -18,18 +20,27 @@
 // analysis assumes |B| < 2^25, so reduced triangles take the block and tile walks only.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 
+#include "tile_walk-inl.hpp"
 #include "triangle_setup-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 inline constexpr std::int32_t kMaxReduction = 4;
 
+// Which blocks a reduced set-up's walk finds.
+enum class BlockRule : std::uint8_t {
+  all_samples,     // the blocks whose k x k samples the triangle all covers
+  each_edge_some,  // the blocks where each edge holds some sample (a superset of those with one)
+};
+
 // `view`'s set-up (a drawn, visible triangle, its box clipped to a rectangle of samples whose
 // edges are multiples of 8 k, or the view's) for blocks of k x k samples; false when no block
-// can be covered.
-inline bool reduce_setup(const TriangleSetup& view, std::int32_t k, TriangleSetup& out) {
+// can be found.
+inline bool reduce_setup(const TriangleSetup& view, std::int32_t k, BlockRule rule,
+                         TriangleSetup& out) {
   // Boxes lie at non-negative samples: plain division rounds down.
   out.box = {view.box.x0 / k, view.box.y0 / k, (view.box.x1 + k - 1) / k,
              (view.box.y1 + k - 1) / k};
@@ -45,8 +56,10 @@ inline bool reduce_setup(const TriangleSetup& view, std::int32_t k, TriangleSetu
   for (int e = 0; e < 3; ++e) {
     const EdgeSetup& edge = view.edge[e];
     const std::int64_t a = edge.a, b = edge.b;
-    const std::int64_t g =
-        edge.g + a * dx + b * dy + (k - 1) * (a < 0 ? a : 0) + (k - 1) * (b < 0 ? b : 0);
+    const bool least = rule == BlockRule::all_samples;
+    const std::int64_t corner_a = least ? (a < 0 ? a : 0) : (a > 0 ? a : 0);
+    const std::int64_t corner_b = least ? (b < 0 ? b : 0) : (b > 0 ? b : 0);
+    const std::int64_t g = edge.g + a * dx + b * dy + (k - 1) * (corner_a + corner_b);
     const std::int64_t magnitude =
         (g < 0 ? -g : g) + (a < 0 ? -a : a) * k * reach_x + (b < 0 ? -b : b) * k * reach_y;
     narrow = narrow && magnitude <= INT32_MAX;
@@ -55,5 +68,66 @@ inline bool reduce_setup(const TriangleSetup& view, std::int32_t k, TriangleSetu
   out.narrow = narrow;
   return out.box.x0 < out.box.x1 && out.box.y0 < out.box.y1;
 }
+
+// Which of a block's k x k samples the triangle covers, bit j k + i for sample (i, j), from
+// `blocks` (a BlockRule::all_samples set-up, whose G at a block is the view's at the corner
+// sample chosen by the steps' signs).
+inline std::uint32_t block_samples(const TriangleSetup& blocks, std::int32_t k, std::int32_t x,
+                                   std::int32_t y) {
+  std::uint32_t covered = (1u << (k * k)) - 1u;
+  for (const EdgeSetup& edge : blocks.edge) {
+    // The view's steps, and its G at the block's first sample (i = j = 0).
+    const std::int64_t a = edge.a / k, b = edge.b / k;
+    const std::int64_t first = edge.g + std::int64_t{edge.a} * (x - blocks.origin_x) +
+                               std::int64_t{edge.b} * (y - blocks.origin_y) -
+                               (k - 1) * ((a < 0 ? a : 0) + (b < 0 ? b : 0));
+    std::uint32_t inside = 0;
+    for (std::int32_t j = 0; j < k; ++j) {
+      for (std::int32_t i = 0; i < k; ++i)
+        inside |= static_cast<std::uint32_t>(first + a * i + b * j >= 0) << (j * k + i);
+    }
+    covered &= inside;
+  }
+  return covered;
+}
+
+// The walk of a triangle's BlockRule::each_edge_some blocks, handing on to the visitor's
+// partial_block(x, y, samples) those of them that hold some covered sample but not all.
+template <class Arch, class Visitor>
+class PartialBlocks {
+ public:
+  PartialBlocks(const TriangleSetup& whole, std::int32_t k, Visitor& visitor)
+      : whole_(whole), k_(k), evaluator_(whole), visitor_(visitor) {}
+
+  void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
+    const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
+    const std::int32_t py = static_cast<std::int32_t>(tile_y) * kTileSize;
+    // Leaves out the tile's blocks covered whole, which the walk of whole blocks has drawn.
+    std::int32_t g[3];
+    for (int e = 0; e < 3; ++e) {
+      const EdgeSetup& edge = whole_.edge[e];
+      g[e] = clamp_to_tile_range(edge.g + std::int64_t{edge.a} * (px - whole_.origin_x) +
+                                 std::int64_t{edge.b} * (py - whole_.origin_y));
+    }
+    for (std::uint64_t left = mask & ~evaluator_.coverage(g); left != 0; left &= left - 1) {
+      const int bit = std::countr_zero(left);
+      const std::int32_t x = px + (bit & 7), y = py + (bit >> 3);
+      const std::uint32_t samples = block_samples(whole_, k_, x, y);
+      if (samples != 0) visitor_.partial_block(x, y, samples);
+    }
+  }
+
+  void full_tiles(std::uint32_t begin, std::uint32_t end, std::uint32_t tile_y,
+                  std::uint64_t mask) {
+    for (std::uint32_t tile_x = begin; tile_x < end; ++tile_x)
+      tile(tile_x, tile_y, mask);
+  }
+
+ private:
+  const TriangleSetup& whole_;
+  const std::int32_t k_;
+  const TileEvaluator<Arch> evaluator_;
+  Visitor& visitor_;
+};
 
 }  // namespace edgewise::EDGEWISE_ISA_NAMESPACE

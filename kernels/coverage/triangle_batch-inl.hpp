@@ -91,11 +91,9 @@ concept ReducingVisitor = requires(const Visitor& visitor) {
   { visitor.reduction() } -> std::same_as<std::int32_t>;
 };
 
-// A triangle's blocks on a reduced target (reduce_setup()), by the block and tile walks.
+// The block and tile walks of a reduced set-up (reduce_setup()).
 template <class Visitor>
-inline void walk_blocks(const TriangleSetup& view, std::int32_t reduction, Visitor& visitor) {
-  TriangleSetup setup;
-  if (!reduce_setup(view, reduction, setup)) return;
+inline void walk_reduced(const TriangleSetup& setup, Visitor& visitor) {
   if (setup.narrow && setup.extent <= kTileSize) {
     walk_block<Arch>(setup, visitor);
   } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
@@ -104,6 +102,21 @@ inline void walk_blocks(const TriangleSetup& view, std::int32_t reduction, Visit
     walk_tiles<Arch, std::int32_t>(setup, visitor);
   } else {
     walk_tiles<Arch, std::int64_t>(setup, visitor);
+  }
+}
+
+// A triangle's blocks on a reduced target: those it covers whole, then, for a visitor that
+// takes them (partial_block), those it covers in part.
+template <class Visitor>
+inline void walk_blocks(const TriangleSetup& view, std::int32_t reduction, Visitor& visitor) {
+  TriangleSetup whole;
+  if (!reduce_setup(view, reduction, BlockRule::all_samples, whole)) return;
+  walk_reduced(whole, visitor);
+  if constexpr (requires { visitor.partial_block(0, 0, 0u); }) {
+    TriangleSetup touched;
+    if (!reduce_setup(view, reduction, BlockRule::each_edge_some, touched)) return;
+    PartialBlocks<WideArch<Arch>, Visitor> partial(whole, reduction, visitor);
+    walk_reduced(touched, partial);
   }
 }
 

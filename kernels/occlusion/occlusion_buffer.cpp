@@ -111,6 +111,7 @@ OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height, std::i
   tile_max_.assign(tiles + detail::kTileMaximaPadding, -std::numeric_limits<float>::infinity());
   plane_tiles_.resize(tiles);
   plane_slots_.resize(tiles);
+  if (reduction_ > 1) layers_.resize(tiles * 64);
   clear();
 }
 
@@ -124,6 +125,7 @@ void OcclusionBuffer::clear() {
   depth_.clear(Vec4{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f);
   std::fill(plane_tiles_.begin(), plane_tiles_.end(), detail::far_plane_tile());
   planes_.assign(1, detail::kFarPlane);
+  std::fill(layers_.begin(), layers_.end(), detail::BlockLayer{});
   std::fill(tile_max_.begin(), tile_max_.end() - detail::kTileMaximaPadding, 1.0f);
 }
 
@@ -147,7 +149,8 @@ DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
   // Planes are kept until clear(), a plane for each triangle a kernel call draws: past a bound,
   // the tiles (their values resolved after the last call) forget theirs.
   if (planes_.size() > std::max(kKeptPlanes, 4 * plane_tiles_.size())) forget_planes(true);
-  const detail::PlaneStore store{plane_tiles_.data(), plane_slots_.data(), &planes_, reduction_};
+  const detail::PlaneStore store{plane_tiles_.data(), plane_slots_.data(), &planes_, reduction_,
+                                 layers_.data()};
   detail::DrawCall call = prepare_view_draw(occluders, draw_options);
   call.plane_store = &store;
   const DrawReport report = detail::run_draw(call, depth_, occluders, draw_options);
@@ -181,7 +184,7 @@ DrawReport OcclusionBuffer::draw_blocks_reference(const DrawMesh& mesh,
 }
 
 detail::ReducedDepth OcclusionBuffer::reduced_depth() {
-  return {detail::FramebufferAccess::depth(depth_), depth_.tiles_x(), reduction_};
+  return {detail::FramebufferAccess::depth(depth_), depth_.tiles_x(), reduction_, layers_.data()};
 }
 
 void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOptions& options) {
@@ -197,6 +200,7 @@ void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOption
   }
   if (reduction_ > 1) {
     detail::copy_block_maxima(frame, reduced_depth());
+    std::fill(layers_.begin(), layers_.end(), detail::BlockLayer{});
   } else {
     // Same tiles, same layout.
     const std::size_t values = (tile_max_.size() - detail::kTileMaximaPadding) * 64;

@@ -17,6 +17,11 @@ float& depth_of(const ReducedDepth& depth, std::int32_t x, std::int32_t y) {
   return depth.tiles[tile * 64 + (y % kTileSize) * kTileSize + x % kTileSize];
 }
 
+BlockLayer& layer_of(const ReducedDepth& depth, std::int32_t x, std::int32_t y) {
+  const std::size_t tile = static_cast<std::size_t>(y / kTileSize) * depth.tiles_x + x / kTileSize;
+  return depth.layers[tile * 64 + (y % kTileSize) * kTileSize + x % kTileSize];
+}
+
 DepthPlane plane_of(const TriangleBatch& batch, const float* vertex_depth, std::size_t t) {
   Vec2 p[3];
   float z[3];
@@ -53,18 +58,24 @@ void draw_block_occluders_reference(const TriangleBatch& batch, const float* ver
         const PixelRect blocks = blocks_of(reference::candidate_pixels(snapped, batch.clip), k);
         for (std::int32_t y = blocks.y0; y < blocks.y1; ++y) {
           for (std::int32_t x = blocks.x0; x < blocks.x1; ++x) {
-            bool whole = true;
-            float farthest = 0.0f;
+            std::uint32_t samples = 0;
+            float farthest = 0.0f;  // over the covered samples
             for (std::int32_t j = 0; j < k; ++j) {
               for (std::int32_t i = 0; i < k; ++i) {
-                whole = whole && reference::covers(snapped, k * x + i, k * y + j);
+                if (!reference::covers(snapped, k * x + i, k * y + j)) continue;
+                samples |= 1u << (j * k + i);
                 farthest = std::max(farthest, depth_at(plane, k * x + i, k * y + j));
               }
             }
-            if (!whole) continue;
+            if (samples == 0) continue;
+            float& stored = depth_of(depth, x, y);
+            const std::uint32_t all = (1u << (k * k)) - 1u;
+            if (samples != all) {
+              stored = block_layer_merge(layer_of(depth, x, y), samples, farthest, stored, all);
+              continue;
+            }
             if (block_slopes_overflow(plane, k)) farthest = 1.0f;
             ++counts.fragments;
-            float& stored = depth_of(depth, x, y);
             if (farthest < stored) {
               stored = farthest;
               ++counts.passed;

@@ -9,6 +9,7 @@
 #include "edgewise/coverage.hpp"
 #include "edgewise/framebuffer.hpp"
 #include "../coverage/triangle_batch.hpp"
+#include "../draw/shading/plane_tiles.hpp"
 #include "../draw/shading/shade_batch.hpp"
 
 namespace edgewise::detail {
@@ -19,12 +20,14 @@ struct ReducedDepth {
   float* tiles = nullptr;
   std::int32_t tiles_x = 0;
   std::int32_t reduction = 2;
+  BlockLayer* layers = nullptr;  // one per pixel, in the tiles' order
 };
 
 // Occluders `batch` (the view's screen triangles, `vertex_depth` per vertex), depth test less
 // with writes, block by block: a block that the triangle covers whole (all its samples, by the
 // view's rule) takes the largest of draw()'s depths at its samples where that is below the stored
-// one. Counts blocks covered and written as fragments and passed.
+// one; one it covers in part merges those samples, at that largest depth, into its layer
+// (block_layer_merge()). Counts blocks covered whole and written as fragments and passed.
 void draw_block_occluders_reference(const TriangleBatch& batch, const float* vertex_depth,
                                     const ReducedDepth& depth, RasterReport& report,
                                     ShadeCounts& counts);

@@ -48,9 +48,13 @@ void expect_at_least_full_depth(const OcclusionBuffer& reduced, const std::vecto
 class ReducedDepth : public IsaTest {};
 
 // The definition, from draw() alone: each triangle drawn by itself (depth test always) shows
-// which samples it covers and their depths; a block covered whole by a triangle, in submission
-// order, takes the largest of those depths where that is below its value. Views whose sides are
-// multiples of the reduction, so that every sample of a block is drawn.
+// which samples it covers and their depths. In submission order, a block covered whole by a
+// triangle takes the largest of its depths over the block where that is below the block's value;
+// a block covered in part, with a largest depth over those samples below its value, adds them
+// to its layer
+// at the larger of the two depths (or starts the layer, when it is empty or no nearer than the
+// block's value), and the block takes the layer's depth once the layer holds all its samples.
+// Views whose sides are multiples of the reduction, so that every sample of a block is drawn.
 TEST_P(ReducedDepth, BlocksEqualTheirDefinition) {
   constexpr std::int32_t kViewWidth = 96, kViewHeight = 64;
   Random random(0x7ed0);
@@ -66,6 +70,12 @@ TEST_P(ReducedDepth, BlocksEqualTheirDefinition) {
       const DrawReport report = buffer.draw_occluders(soup.mesh(), options);
 
       std::vector<float> want(static_cast<std::size_t>(kViewWidth / k) * (kViewHeight / k), 1.0f);
+      struct Layer {
+        float depth = 1.0f;
+        std::uint32_t samples = 0;
+      };
+      std::vector<Layer> layers(want.size());
+      const std::uint32_t all = (1u << (k * k)) - 1u;
       std::uint64_t fragments = 0, passed = 0;
       Framebuffer alone(kViewWidth, kViewHeight);
       DrawOptions draw_options;
@@ -78,17 +88,32 @@ TEST_P(ReducedDepth, BlocksEqualTheirDefinition) {
              draw_options);
         for (std::int32_t by = 0; by < kViewHeight / k; ++by) {
           for (std::int32_t bx = 0; bx < kViewWidth / k; ++bx) {
-            bool whole = true;
+            std::uint32_t samples = 0;
             float farthest = 0.0f;
             for (std::int32_t j = 0; j < k; ++j) {
               for (std::int32_t i = 0; i < k; ++i) {
-                whole = whole && alone.color(k * bx + i, k * by + j) == 0xFFFFFFFFu;
+                if (alone.color(k * bx + i, k * by + j) != 0xFFFFFFFFu) continue;
+                samples |= 1u << (j * k + i);
                 farthest = std::max(farthest, alone.depth(k * bx + i, k * by + j));
               }
             }
-            if (!whole) continue;
+            const std::size_t block = static_cast<std::size_t>(by) * (kViewWidth / k) + bx;
+            float& stored = want[block];
+            if (samples == 0) continue;
+            if (samples != all) {
+              Layer& layer = layers[block];
+              if (!(farthest < stored)) continue;
+              if (layer.samples == 0 || !(layer.depth < stored)) {
+                layer = {farthest, samples};
+              } else if ((layer.samples | samples) == all) {
+                stored = std::max(layer.depth, farthest);
+                layer = {};
+              } else {
+                layer = {std::max(layer.depth, farthest), layer.samples | samples};
+              }
+              continue;
+            }
             ++fragments;
-            float& stored = want[static_cast<std::size_t>(by) * (kViewWidth / k) + bx];
             if (farthest < stored) {
               stored = farthest;
               ++passed;

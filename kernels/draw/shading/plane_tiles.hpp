@@ -58,6 +58,36 @@ inline PlaneTile far_plane_tile() {
   return tile;
 }
 
+// What a block of a reduced buffer knows of the samples that triangles have covered in part:
+// each sample of `samples` (bit j k + i for sample (i, j)) has a depth at most `depth`. Useful
+// while `depth` lies below the block's value; once `samples` holds every sample, the block's
+// value falls to `depth` (block_layer_merge()).
+struct BlockLayer {
+  float depth = 1.0f;
+  std::uint32_t samples = 0;
+};
+
+// A triangle that covers `samples` of a block in part (some, not all of `all`), at depths at
+// most `depth`, merged into the block's layer; the block's value is `value`. Returns the value
+// the block falls to (below `value`) when the samples of the layer and the triangle together
+// make up all of the block's, else `value`. Conservative: every sample the layer names keeps a
+// depth at most the layer's.
+inline float block_layer_merge(BlockLayer& layer, std::uint32_t samples, float depth, float value,
+                               std::uint32_t all) {
+  if (!(depth < value)) return value;  // no nearer than the block already is
+  if (layer.samples == 0 || !(layer.depth < value)) {
+    layer = {depth, samples};
+    return value;
+  }
+  const BlockLayer merged{depth > layer.depth ? depth : layer.depth, layer.samples | samples};
+  if (merged.samples == all) {
+    layer = BlockLayer{};
+    return merged.depth;
+  }
+  layer = merged;
+  return value;
+}
+
 // What one kernel call draws occluders into: a buffer's tiles and their slots, in the
 // Framebuffer's tile order, and its planes, where the call's triangle t writes its own as plane
 // first_plane + t. On a reduced buffer (`reduction` 2 or 4), a pixel of the tiles stands for a
@@ -69,6 +99,7 @@ struct PlaneTiles {
   DepthPlane* planes = nullptr;
   std::uint32_t first_plane = 0;
   std::int32_t reduction = 1;
+  BlockLayer* layers = nullptr;  // per pixel of a reduced buffer, in the tiles' order
 };
 
 // What draw() is given to draw occluders with: the tiles, and the planes, which it grows by
@@ -79,6 +110,7 @@ struct PlaneStore {
   PlaneSlots* slots = nullptr;
   std::vector<DepthPlane>* planes = nullptr;
   std::int32_t reduction = 1;
+  BlockLayer* layers = nullptr;
 
   // Room for `count` more planes; returns the first. Throws std::length_error past 2^32 planes.
   std::uint32_t reserve(std::size_t count) const {
@@ -89,7 +121,7 @@ struct PlaneStore {
     return static_cast<std::uint32_t>(first);
   }
   PlaneTiles view(std::uint32_t first_plane) const {
-    return {tiles, slots, planes->data(), first_plane, reduction};
+    return {tiles, slots, planes->data(), first_plane, reduction, layers};
   }
 };
 

@@ -45,7 +45,9 @@ class OccluderVisitor {
         slots_(batch.plane_tiles.slots),
         planes_(batch.plane_tiles.planes),
         first_plane_(batch.plane_tiles.first_plane),
-        reduction_(batch.plane_tiles.reduction) {}
+        reduction_(batch.plane_tiles.reduction),
+        layers_(batch.plane_tiles.layers),
+        all_samples_((1u << (reduction_ * reduction_)) - 1u) {}
 
   // On a reduced buffer the walk hands on blocks, each covered when all its samples are
   // (triangle_batch-inl.hpp), and each takes the largest depth of its samples.
@@ -127,6 +129,8 @@ class OccluderVisitor {
     lowest_depth_ = lowest_[l];
     highest_depth_ = highest_[l];
     if (reduction_ > 1) {
+      view_plane_ = plane_;
+      view_lowest_ = lowest_depth_;
       // A block's depth is one of its samples' (covered, so within the bounds), or 1.
       plane_ = detail::block_depth_plane(plane_, reduction_, /*farthest=*/true);
       if (plane_.dzdx == 0.0f && plane_.dzdy == 0.0f && plane_.z0 == 1.0f)
@@ -170,6 +174,40 @@ class OccluderVisitor {
     passed_ += taken;
   }
 
+  // A block of a reduced buffer that the triangle covers in part (`samples`, some of the block's):
+  // merged into the block's layer at the largest depth draw() gives those samples, the block
+  // falling to the layer's depth once the layer holds all its samples (block_layer_merge()).
+  void partial_block(std::int32_t x, std::int32_t y, std::uint32_t samples) {
+    const std::size_t index =
+        static_cast<std::size_t>(y / kTileSize) * static_cast<std::size_t>(batch_.tiles_x) +
+        static_cast<std::size_t>(x / kTileSize);
+    detail::PlaneTile& tile = tiles_[index];
+    // Behind every value of the tile: nothing to merge (block_layer_merge() would return first).
+    if (view_lowest_ >= tile.highest) return;
+    const int pixel = (y % kTileSize) * kTileSize + x % kTileSize;
+    const float value =
+        block_value(tile, slots_[index], batch_.depth_tiles + index * 64, pixel, x, y);
+    float farthest = 0.0f;
+    for (std::uint32_t left = samples; left != 0; left &= left - 1) {
+      const int sample = std::countr_zero(left);
+      const float z = detail::depth_at(view_plane_, reduction_ * x + sample % reduction_,
+                                       reduction_ * y + sample / reduction_);
+      farthest = z > farthest ? z : farthest;
+    }
+    const float lowered = detail::block_layer_merge(layers_[index * 64 + pixel], samples, farthest,
+                                                    value, all_samples_);
+    if (!(lowered < value)) return;
+    float* depth = batch_.depth_tiles + index * 64;
+    if (tile.kind != detail::TileKind::values) {
+      write_plane_tile<Arch>(tile, slots_[index], planes_, x - x % kTileSize, y - y % kTileSize,
+                             depth);
+      tile.kind = detail::TileKind::values;
+      tile.unresolved = false;
+    }
+    depth[pixel] = lowered;
+    if (!(lowered >= tile.lowest)) tile.lowest = lowered;
+  }
+
   void add_counts(detail::ShadeCounts& counts) const {
     counts.fragments += fragments_;
     counts.passed += passed_;
@@ -205,6 +243,20 @@ class OccluderVisitor {
       tile.unresolved = false;
     }
     test_pixels(tile, mask, depth, px, py);
+  }
+
+  // The depth that `tile` (its slots, its values `depth`) holds at `pixel`, pixel (x, y) of the
+  // target: the value resolve_plane_tiles would write.
+  float block_value(const detail::PlaneTile& tile, const detail::PlaneSlots& slots,
+                    const float* depth, int pixel, std::int32_t x, std::int32_t y) const {
+    if (tile.kind == detail::TileKind::values) return depth[pixel];
+    std::uint32_t plane = tile.plane;
+    if (tile.kind == detail::TileKind::slots) {
+      for (int s = 0; s < detail::kPlaneTileSlots; ++s) {
+        if ((slots.mask[s] >> pixel) & 1u) plane = slots.plane[s];
+      }
+    }
+    return detail::depth_at(planes_[plane], x, y);
   }
 
   // Clamped to [0, 1]; NaN stays NaN.
@@ -287,9 +339,14 @@ class OccluderVisitor {
   detail::DepthPlane* const planes_;
   const std::uint32_t first_plane_;
   const std::int32_t reduction_;
+  detail::BlockLayer* const layers_;
+  const std::uint32_t all_samples_;  // a block's samples, as BlockLayer::samples names them
   PlaneGroup<Arch> group_;
   float lowest_[kGroupLanes], highest_[kGroupLanes];
   detail::DepthPlane plane_{};
+  // On a reduced buffer, the triangle's plane and lower bound in the view.
+  detail::DepthPlane view_plane_{};
+  float view_lowest_ = 0.0f;
   std::uint32_t plane_index_ = 0;
   float lowest_depth_ = 0.0f, highest_depth_ = 1.0f;
   detail::PlaneTile whole_tile_{};  // a tile the triangle covers whole, in front of it

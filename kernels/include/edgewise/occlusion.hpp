@@ -44,6 +44,7 @@ struct SampleRect;
 struct DepthPlane;
 struct PlaneTile;
 struct PlaneSlots;
+struct BlockLayer;
 }  // namespace detail
 
 enum class Visibility : std::uint8_t {
@@ -176,6 +177,9 @@ class OcclusionBuffer {
   std::vector<detail::PlaneTile> plane_tiles_;
   std::vector<detail::PlaneSlots> plane_slots_;
   std::vector<detail::DepthPlane> planes_;
+  // Of a reduced buffer, per block: the samples that triangles covering the block in part have
+  // covered, and a depth they lie at or below.
+  std::vector<detail::BlockLayer> layers_;
   // The largest depth of each 8x8 tile, exact: rebuilt after every change of the depths.
   std::vector<float> tile_max_;
 };
