@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common/choice_options.hpp"
 #include "common/image_file.hpp"
 #include "common/isa_options.hpp"
 #include "common/median.hpp"
@@ -29,6 +30,7 @@ struct Arguments {
   int frames = 7;
   int blocks = 20;
   int props = 22;
+  int reduction = 1;  // of the occlusion buffer
   std::optional<Isa> isa;
   std::optional<std::string> output;
 };
@@ -54,7 +56,7 @@ int run(const Arguments& arguments) {
   scene::CityFrameOptions options;
   options.isa = arguments.isa;
   Framebuffer whole(arguments.width, arguments.height), culled(arguments.width, arguments.height);
-  OcclusionBuffer occlusion(arguments.width, arguments.height);
+  OcclusionBuffer occlusion(arguments.width, arguments.height, arguments.reduction);
   scene::Mesh visible;
   std::vector<double> whole_times, culled_times, occluder_times, query_times, draw_times;
   scene::CityFrame last;
@@ -74,8 +76,11 @@ int run(const Arguments& arguments) {
   std::cout << "edgewise-city: " << objects << " objects (" << city.buildings
             << " buildings and the ground, the occluders; " << props << " trees), "
             << city.mesh.indices.size() / 3 << " triangles, " << arguments.width << "x"
-            << arguments.height << ", ISA " << name_of(resolve_isa(arguments.isa)) << ", median of "
-            << arguments.frames << " frames each\n"
+            << arguments.height << ", ISA " << name_of(resolve_isa(arguments.isa))
+            << (arguments.reduction == 1
+                    ? ""
+                    : ", occlusion at 1/" + std::to_string(arguments.reduction) + " resolution")
+            << ", median of " << arguments.frames << " frames each\n"
             << "  whole frame     " << ms(whole_ms) << "\n"
             << "  culled frame    " << ms(culled_ms) << "  (" << std::fixed << std::setprecision(2)
             << whole_ms / culled_ms << "x faster)\n"
@@ -113,7 +118,8 @@ int main(int argc, char** argv) {
   Arguments arguments;
   return tools::run_tool(
       argc, argv, "edgewise-city",
-      {"[--width W] [--height H] [--frames N] [--blocks N] [--props N] [--isa NAME] [-o FILE]"},
+      {"[--width W] [--height H] [--frames N] [--blocks N] [--props N] [--reduction K] "
+       "[--isa NAME] [-o FILE]"},
       [&arguments](tools::CommandLine& command_line) {
         command_line.description(
             "Draws a procedural city of box buildings and trees from street level, whole and\n"
@@ -128,6 +134,10 @@ int main(int argc, char** argv) {
                                   "blocks per side of the city (default 20: 1,600 buildings)");
         tools::add_integer_option(command_line, "--props", arguments.props, 0, 200,
                                   "trees per block (default 22)");
+        tools::add_choice_option(
+            command_line, "--reduction", {"1", "2", "4"},
+            [&arguments](std::size_t i) { arguments.reduction = 1 << i; },
+            "pixels per occlusion depth on each axis: 1 (exact, default), 2 or 4 (conservative)");
         tools::add_isa_options(command_line, arguments.isa,
                                "the ISA (default: the best of this CPU)",
                                "draw with the reference");

@@ -1,7 +1,7 @@
 // Occlusion culling: occluders drawn by OcclusionBuffer::draw_occluders() with the fill-rate
 // protocol of Masked Occlusion Culling (fillrate_triangles.hpp), one thread and all threads, and
 // rectangle queries against a screen full of occluders; at full resolution and with a depth per
-// 2x2 or 4x4 pixels (`reduction`).
+// 2x2 or 4x4 pixels (`reduction`, partial coverage ignored, or `merged`).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -21,10 +21,26 @@ namespace {
 // triangles' area (edge pixels make up the difference at 10 px), or it measured something else.
 constexpr double kOccluderWrittenTolerance = 0.05;
 
+// A reduced buffer's blocks per pixel on each axis, and how it takes partial coverage.
+struct Reduction {
+  std::int32_t pixels = 1;
+  PartialCoverage partial = PartialCoverage::ignored;
+  std::string name() const {
+    if (pixels == 1) return "";
+    return "/reduction:" + std::to_string(pixels) +
+           (partial == PartialCoverage::merged ? "/merged" : "");
+  }
+};
+constexpr Reduction kReductions[] = {{1, PartialCoverage::ignored},
+                                     {2, PartialCoverage::ignored},
+                                     {4, PartialCoverage::ignored},
+                                     {2, PartialCoverage::merged},
+                                     {4, PartialCoverage::merged}};
+
 void occluder_fill(benchmark::State& state, Isa isa, int size, std::size_t threads,
-                   std::int32_t reduction) {
+                   Reduction reduction) {
   const FillrateTriangles& triangles = fillrate_triangles(size, fillrate_count(size));
-  OcclusionBuffer buffer(kWidth, kHeight, reduction);
+  OcclusionBuffer buffer(kWidth, kHeight, reduction.pixels, reduction.partial);
   OcclusionOptions options;
   options.isa = isa;
   options.threads = threads;
@@ -39,9 +55,9 @@ void occluder_fill(benchmark::State& state, Isa isa, int size, std::size_t threa
   // A reduced buffer writes the blocks that triangles cover whole: fewer than their area in
   // blocks, by the blocks along their edges.
   const double blocks = 0.5 * size * size * static_cast<double>(triangles.triangles()) /
-                        (static_cast<double>(reduction) * reduction);
+                        (static_cast<double>(reduction.pixels) * reduction.pixels);
   const double written = static_cast<double>(report.fragments_passed);
-  const bool as_expected = reduction == 1
+  const bool as_expected = reduction.pixels == 1
                                ? std::abs(written - blocks) <= kOccluderWrittenTolerance * blocks
                                : written > 0.0 && written <= blocks;
   if (report.isa != isa) {
@@ -58,8 +74,8 @@ void occluder_fill(benchmark::State& state, Isa isa, int size, std::size_t threa
       static_cast<double>(report.fragments_passed) * iterations, benchmark::Counter::kIsRate);
 }
 
-void rect_query_rate(benchmark::State& state, Isa isa, std::int32_t reduction) {
-  const OcclusionBuffer& buffer = query_scene(isa, reduction);
+void rect_query_rate(benchmark::State& state, Isa isa, Reduction reduction) {
+  const OcclusionBuffer& buffer = query_scene(isa, reduction.pixels, reduction.partial);
   const std::vector<OcclusionRect>& rects = query_rects();
   std::vector<Visibility> answers(rects.size());
   for (auto _ : state) {
@@ -80,13 +96,12 @@ void rect_query_rate(benchmark::State& state, Isa isa, std::int32_t reduction) {
 void register_occlusion_benchmarks() {
   for (Isa isa : supported_isas()) {
     if (isa == Isa::reference) continue;  // the reference draws through draw()'s reference
-    for (const std::int32_t reduction : {1, 2, 4}) {
+    for (const Reduction& reduction : kReductions) {
       for (const int size : kFillrateSizes) {
         for (const std::size_t threads : {std::size_t{1}, std::size_t{0}}) {
-          const std::string name =
-              "Occluders/" + std::string(name_of(isa)) + "/size:" + std::to_string(size) +
-              (threads == 1 ? "" : "/threads:all") +
-              (reduction == 1 ? "" : "/reduction:" + std::to_string(reduction));
+          const std::string name = "Occluders/" + std::string(name_of(isa)) +
+                                   "/size:" + std::to_string(size) +
+                                   (threads == 1 ? "" : "/threads:all") + reduction.name();
           benchmark::RegisterBenchmark(name.c_str(), occluder_fill, isa, size, threads, reduction)
               ->Unit(benchmark::kMillisecond)
               ->UseRealTime();
@@ -94,10 +109,9 @@ void register_occlusion_benchmarks() {
       }
     }
   }
-  for (const std::int32_t reduction : {1, 2, 4}) {
+  for (const Reduction& reduction : kReductions) {
     for (Isa isa : supported_isas()) {
-      const std::string name = "RectQueries/" + std::string(name_of(isa)) +
-                               (reduction == 1 ? "" : "/reduction:" + std::to_string(reduction));
+      const std::string name = "RectQueries/" + std::string(name_of(isa)) + reduction.name();
       benchmark::RegisterBenchmark(name.c_str(), rect_query_rate, isa, reduction)
           ->Unit(benchmark::kMillisecond);
     }

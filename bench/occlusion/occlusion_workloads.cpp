@@ -3,20 +3,21 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <utility>
+#include <tuple>
 
 #include "../benchmarks.hpp"
 #include "fillrate_triangles.hpp"
 
 namespace edgewise::bench {
 
-const OcclusionBuffer& query_scene(Isa isa, std::int32_t reduction) {
+const OcclusionBuffer& query_scene(Isa isa, std::int32_t reduction, PartialCoverage partial) {
   static std::mutex mutex;
-  static std::map<std::pair<Isa, std::int32_t>, std::unique_ptr<OcclusionBuffer>> scenes;
+  static std::map<std::tuple<Isa, std::int32_t, PartialCoverage>, std::unique_ptr<OcclusionBuffer>>
+      scenes;
   const std::lock_guard lock(mutex);
-  std::unique_ptr<OcclusionBuffer>& scene = scenes[{isa, reduction}];
+  std::unique_ptr<OcclusionBuffer>& scene = scenes[{isa, reduction, partial}];
   if (!scene) {
-    scene = std::make_unique<OcclusionBuffer>(kWidth, kHeight, reduction);
+    scene = std::make_unique<OcclusionBuffer>(kWidth, kHeight, reduction, partial);
     OcclusionOptions options;
     options.isa = isa;
     const FillrateTriangles& t = fillrate_triangles(kQuerySceneSize, kQuerySceneTriangles);

@@ -10,8 +10,10 @@
 
 namespace edgewise::bench {
 
-// The 50-px fill-rate triangles drawn into a 1920x1080 buffer (once per ISA and reduction).
-const OcclusionBuffer& query_scene(Isa isa, std::int32_t reduction = 1);
+// The 50-px fill-rate triangles drawn into a 1920x1080 buffer (once per ISA, reduction and
+// partial coverage).
+const OcclusionBuffer& query_scene(Isa isa, std::int32_t reduction = 1,
+                                   PartialCoverage partial = PartialCoverage::ignored);
 
 // 65,536 rectangles in pixels, each with a depth in the occluders' range.
 const std::vector<OcclusionRect>& query_rects();

@@ -106,13 +106,14 @@ inline void walk_reduced(const TriangleSetup& setup, Visitor& visitor) {
 }
 
 // A triangle's blocks on a reduced target: those it covers whole, then, for a visitor that
-// takes them (partial_block), those it covers in part.
+// takes them (partial_block, when merges_partial_blocks()), those it covers in part.
 template <class Visitor>
 inline void walk_blocks(const TriangleSetup& view, std::int32_t reduction, Visitor& visitor) {
   TriangleSetup whole;
   if (!reduce_setup(view, reduction, BlockRule::all_samples, whole)) return;
   walk_reduced(whole, visitor);
   if constexpr (requires { visitor.partial_block(0, 0, 0u); }) {
+    if (!visitor.merges_partial_blocks()) return;
     TriangleSetup touched;
     if (!reduce_setup(view, reduction, BlockRule::each_edge_some, touched)) return;
     PartialBlocks<WideArch<Arch>, Visitor> partial(whole, reduction, visitor);

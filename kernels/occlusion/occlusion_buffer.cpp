@@ -98,20 +98,26 @@ std::int32_t reduced_side(std::int32_t view, std::int32_t reduction) {
 
 }  // namespace
 
-OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height, std::int32_t reduction)
+OcclusionBuffer::OcclusionBuffer(std::int32_t width, std::int32_t height, std::int32_t reduction,
+                                 PartialCoverage partial)
     : width_(width),
       height_(height),
       reduction_(checked_reduction(reduction)),
+      partial_(partial),
       depth_(reduced_side(width, reduction_), reduced_side(height, reduction_)) {
   if (width < 1 || height < 1) {
     throw std::invalid_argument("OcclusionBuffer: size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " has no pixel");
   }
+  if (name_of(partial) == "unknown") {
+    throw std::invalid_argument("OcclusionBuffer: partial coverage " +
+                                std::to_string(static_cast<int>(partial)) + " is not a value");
+  }
   const std::size_t tiles = static_cast<std::size_t>(depth_.tiles_x()) * depth_.tiles_y();
   tile_max_.assign(tiles + detail::kTileMaximaPadding, -std::numeric_limits<float>::infinity());
   plane_tiles_.resize(tiles);
   plane_slots_.resize(tiles);
-  if (reduction_ > 1) layers_.resize(tiles * 64);
+  if (reduction_ > 1 && partial_ == PartialCoverage::merged) layers_.resize(tiles * 64);
   clear();
 }
 
@@ -150,7 +156,7 @@ DrawReport OcclusionBuffer::draw_occluders(const OcclusionMesh& mesh,
   // the tiles (their values resolved after the last call) forget theirs.
   if (planes_.size() > std::max(kKeptPlanes, 4 * plane_tiles_.size())) forget_planes(true);
   const detail::PlaneStore store{plane_tiles_.data(), plane_slots_.data(), &planes_, reduction_,
-                                 layers_.data()};
+                                 layers_.empty() ? nullptr : layers_.data()};
   detail::DrawCall call = prepare_view_draw(occluders, draw_options);
   call.plane_store = &store;
   const DrawReport report = detail::run_draw(call, depth_, occluders, draw_options);
@@ -184,7 +190,8 @@ DrawReport OcclusionBuffer::draw_blocks_reference(const DrawMesh& mesh,
 }
 
 detail::ReducedDepth OcclusionBuffer::reduced_depth() {
-  return {detail::FramebufferAccess::depth(depth_), depth_.tiles_x(), reduction_, layers_.data()};
+  return {detail::FramebufferAccess::depth(depth_), depth_.tiles_x(), reduction_,
+          layers_.empty() ? nullptr : layers_.data()};
 }
 
 void OcclusionBuffer::copy_depth(const Framebuffer& frame, const OcclusionOptions& options) {
@@ -327,6 +334,22 @@ std::string_view name_of(Visibility value) {
       return "outside";
   }
   return "unknown";
+}
+
+std::string_view name_of(PartialCoverage value) {
+  switch (value) {
+    case PartialCoverage::ignored:
+      return "ignored";
+    case PartialCoverage::merged:
+      return "merged";
+  }
+  return "unknown";
+}
+
+template <>
+std::span<const PartialCoverage> values_of<PartialCoverage>() {
+  static constexpr PartialCoverage kValues[] = {PartialCoverage::ignored, PartialCoverage::merged};
+  return kValues;
 }
 
 template <>

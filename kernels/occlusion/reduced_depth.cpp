@@ -71,7 +71,8 @@ void draw_block_occluders_reference(const TriangleBatch& batch, const float* ver
             float& stored = depth_of(depth, x, y);
             const std::uint32_t all = (1u << (k * k)) - 1u;
             if (samples != all) {
-              stored = block_layer_merge(layer_of(depth, x, y), samples, farthest, stored, all);
+              if (depth.layers != nullptr)
+                stored = block_layer_merge(layer_of(depth, x, y), samples, farthest, stored, all);
               continue;
             }
             if (block_slopes_overflow(plane, k)) farthest = 1.0f;

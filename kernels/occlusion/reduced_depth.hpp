@@ -20,14 +20,16 @@ struct ReducedDepth {
   float* tiles = nullptr;
   std::int32_t tiles_x = 0;
   std::int32_t reduction = 2;
-  BlockLayer* layers = nullptr;  // one per pixel, in the tiles' order
+  BlockLayer* layers = nullptr;  // one per pixel, in the tiles' order; null: partial coverage
+                                 // ignored
 };
 
 // Occluders `batch` (the view's screen triangles, `vertex_depth` per vertex), depth test less
 // with writes, block by block: a block that the triangle covers whole (all its samples, by the
 // view's rule) takes the largest of draw()'s depths at its samples where that is below the stored
-// one; one it covers in part merges those samples, at that largest depth, into its layer
-// (block_layer_merge()). Counts blocks covered whole and written as fragments and passed.
+// one; one it covers in part merges those samples, at the largest depth among them, into its
+// layer (block_layer_merge()), when there are layers. Counts blocks covered whole and written as
+// fragments and passed.
 void draw_block_occluders_reference(const TriangleBatch& batch, const float* vertex_depth,
                                     const ReducedDepth& depth, RasterReport& report,
                                     ShadeCounts& counts);

@@ -35,6 +35,7 @@ void expect_names_round_trip(int value_count) {
 TEST(Names, EveryEnumRoundTrips) {
   expect_names_round_trip<Isa>(6);
   expect_names_round_trip<CullMode>(3);
+  expect_names_round_trip<PartialCoverage>(2);
   expect_names_round_trip<TriangleStatus>(6);
   expect_names_round_trip<ClipStatus>(6);
   expect_names_round_trip<InterpolationMethod>(6);

@@ -8,7 +8,8 @@
 // - a box's answer differs between an ISA and the reference;
 // - a box is answered occluded while its twelve faces drawn with depth test less show a sample
 //   (test_triangles(), the oracle), or outside while they cover one;
-// - in buffers reduced 2 and 4 times: the blocks differ in any bit from the reference's, a block
+// - in buffers reduced 2 and 4 times (partial coverage ignored and merged): the blocks differ in
+// any bit from the reference's, a block
 //   lies below the full-resolution depth of one of its pixels, or a rectangle or box is answered
 //   occluded where the full-resolution answer is visible, or outside where it is not.
 //
@@ -180,20 +181,21 @@ bool contradicts(Visibility reduced, Visibility full) {
 
 // The reduced buffers of every ISA against the reference's, and against the full-resolution
 // depth `full` and answers.
-void check_reduced(const Input& input, std::int32_t k, const std::vector<float>& full,
-                   const std::vector<OcclusionBox>& boxes,
+void check_reduced(const Input& input, std::int32_t k, PartialCoverage partial,
+                   const std::vector<float>& full, const std::vector<OcclusionBox>& boxes,
                    const std::vector<Visibility>& full_boxes,
                    const std::vector<Visibility>& full_faces) {
   OcclusionOptions options;
   options.transform = input.transform;
   options.threads = 1;
   options.isa = Isa::reference;
-  OcclusionBuffer reference(input.width, input.height, k);
+  OcclusionBuffer reference(input.width, input.height, k, partial);
   reference.draw_occluders({input.occluders, {}}, options);
   std::vector<float> want(static_cast<std::size_t>(reference.depth_width()) *
                           reference.depth_height());
   reference.read_depth(want);
-  const std::string reduced = "reduced " + std::to_string(k) + ": ";
+  const std::string reduced =
+      "reduced " + std::to_string(k) + ", partial coverage " + std::string(name_of(partial)) + ": ";
   for (std::int32_t y = 0; y < input.height; ++y) {
     for (std::int32_t x = 0; x < input.width; ++x) {
       const float block = want[static_cast<std::size_t>(y / k) * reference.depth_width() + x / k];
@@ -205,7 +207,7 @@ void check_reduced(const Input& input, std::int32_t k, const std::vector<float>&
   std::vector<float> got(want.size());
   for (const Isa isa : supported_isas()) {
     options.isa = isa;
-    OcclusionBuffer buffer(input.width, input.height, k);
+    OcclusionBuffer buffer(input.width, input.height, k, partial);
     buffer.draw_occluders({input.occluders, {}}, options);
     buffer.read_depth(got);
     for (std::size_t i = 0; i < want.size(); ++i) {
@@ -292,7 +294,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     buffer.test_boxes(valid_boxes, input.transform, boxes, isa);
     if (boxes != reference_boxes) finding(input, std::string(name_of(isa)) + ": box answers");
   }
-  for (const std::int32_t k : {2, 4})
-    check_reduced(input, k, want, valid_boxes, reference_boxes, face_oracles);
+  for (const std::int32_t k : {2, 4}) {
+    for (const PartialCoverage partial : values_of<PartialCoverage>())
+      check_reduced(input, k, partial, want, valid_boxes, reference_boxes, face_oracles);
+  }
   return 0;
 }

@@ -24,6 +24,11 @@ namespace edgewise::test {
 namespace {
 
 constexpr std::int32_t kReductions[] = {2, 4};
+constexpr PartialCoverage kPartials[] = {PartialCoverage::ignored, PartialCoverage::merged};
+
+std::string mode(std::int32_t k, PartialCoverage partial) {
+  return "reduction " + std::to_string(k) + ", partial coverage " + std::string(name_of(partial));
+}
 
 std::vector<float> depth_of(const OcclusionBuffer& buffer) {
   std::vector<float> depth(static_cast<std::size_t>(buffer.depth_width()) * buffer.depth_height());
@@ -53,17 +58,18 @@ class ReducedDepth : public IsaTest {};
 // a block covered in part, with a largest depth over those samples below its value, adds them
 // to its layer
 // at the larger of the two depths (or starts the layer, when it is empty or no nearer than the
-// block's value), and the block takes the layer's depth once the layer holds all its samples.
+// block's value), and the block takes the layer's depth once the layer holds all its samples
+// (with partial coverage merged).
 // Views whose sides are multiples of the reduction, so that every sample of a block is drawn.
 TEST_P(ReducedDepth, BlocksEqualTheirDefinition) {
   constexpr std::int32_t kViewWidth = 96, kViewHeight = 64;
   Random random(0x7ed0);
   for (const std::int32_t k : kReductions) {
-    for (int scene = 0; scene < 6; ++scene) {
-      const OccluderSoup soup = random_occluders(random, 4 + 6 * scene);
-      const std::string what =
-          "reduction " + std::to_string(k) + ", scene " + std::to_string(scene);
-      OcclusionBuffer buffer(kViewWidth, kViewHeight, k);
+    for (int scene = 0; scene < 12; ++scene) {
+      const PartialCoverage partial = kPartials[scene % 2];
+      const OccluderSoup soup = random_occluders(random, 4 + 3 * scene);
+      const std::string what = mode(k, partial) + ", scene " + std::to_string(scene);
+      OcclusionBuffer buffer(kViewWidth, kViewHeight, k, partial);
       OcclusionOptions options;
       options.isa = isa();
       options.threads = 1 + static_cast<std::size_t>(scene % 3);
@@ -101,6 +107,7 @@ TEST_P(ReducedDepth, BlocksEqualTheirDefinition) {
             float& stored = want[block];
             if (samples == 0) continue;
             if (samples != all) {
+              if (partial == PartialCoverage::ignored) continue;
               Layer& layer = layers[block];
               if (!(farthest < stored)) continue;
               if (layer.samples == 0 || !(layer.depth < stored)) {
@@ -143,11 +150,11 @@ TEST_P(ReducedDepth, KernelsEqualReference) {
   const std::int32_t sizes[][2] = {{101, 77}, {203, 150}, {37, 300}};
   for (const std::int32_t k : kReductions) {
     for (int scene = 0; scene < 12; ++scene) {
+      const PartialCoverage partial = kPartials[(scene / 3) % 2];
       const std::int32_t width = sizes[scene % 3][0], height = sizes[scene % 3][1];
       const OccluderSoup soup = random_occluders(random, 10 + 25 * scene);
-      const std::string what =
-          "reduction " + std::to_string(k) + ", scene " + std::to_string(scene);
-      OcclusionBuffer got(width, height, k), want(width, height, k);
+      const std::string what = mode(k, partial) + ", scene " + std::to_string(scene);
+      OcclusionBuffer got(width, height, k, partial), want(width, height, k, partial);
       OcclusionOptions options, reference;
       options.isa = isa();
       options.threads = 1 + static_cast<std::size_t>(scene % 4);
@@ -197,7 +204,8 @@ TEST_P(ReducedDepth, HugeTrianglesEqualReference) {
                            static_cast<float>(random.uniform())});
     }
     for (const std::int32_t k : kReductions) {
-      OcclusionBuffer got(width, height, k), want(width, height, k);
+      const PartialCoverage partial = kPartials[scene % 2];
+      OcclusionBuffer got(width, height, k, partial), want(width, height, k, partial);
       OcclusionOptions options, reference;
       options.isa = isa();
       reference.isa = Isa::reference;
@@ -206,7 +214,7 @@ TEST_P(ReducedDepth, HugeTrianglesEqualReference) {
       const std::vector<float> a = depth_of(got), b = depth_of(want);
       for (std::size_t i = 0; i < a.size(); ++i) {
         ASSERT_EQ(std::bit_cast<std::uint32_t>(a[i]), std::bit_cast<std::uint32_t>(b[i]))
-            << "reduction " << k << ", scene " << scene << ": block (" << i % got.depth_width()
+            << mode(k, partial) << ", scene " << scene << ": block (" << i % got.depth_width()
             << ", " << i / got.depth_width() << ")";
       }
     }
@@ -219,13 +227,13 @@ TEST_P(ReducedDepth, NeverBelowFullResolution) {
   Random random(0x7ed2);
   for (const std::int32_t k : kReductions) {
     for (int scene = 0; scene < 8; ++scene) {
+      const PartialCoverage partial = kPartials[scene % 2];
       const std::int32_t width = 61 + 17 * scene, height = 47 + 9 * scene;
       const OccluderSoup soup = random_occluders(random, 5 + 20 * scene);
-      const std::string what =
-          "reduction " + std::to_string(k) + ", scene " + std::to_string(scene);
+      const std::string what = mode(k, partial) + ", scene " + std::to_string(scene);
       OcclusionOptions options;
       options.isa = isa();
-      OcclusionBuffer full(width, height), reduced(width, height, k);
+      OcclusionBuffer full(width, height), reduced(width, height, k, partial);
       full.draw_occluders(soup.mesh(), options);
       reduced.draw_occluders(soup.mesh(), options);
       const std::vector<float> full_depth = depth_of(full);
@@ -265,10 +273,11 @@ TEST_P(ReducedDepth, RectanglesNeverOccludedWhereSamplesShow) {
   const int scenes = 20;
   for (int scene = 0; scene < scenes; ++scene) {
     const std::int32_t k = kReductions[scene % 2];
+    const PartialCoverage partial = kPartials[(scene / 2) % 2];
     const OccluderSoup soup = random_occluders(random, 1 + scene * 4);
     OcclusionOptions options;
     options.isa = isa();
-    OcclusionBuffer full(kViewWidth, kViewHeight), reduced(kViewWidth, kViewHeight, k);
+    OcclusionBuffer full(kViewWidth, kViewHeight), reduced(kViewWidth, kViewHeight, k, partial);
     full.draw_occluders(soup.mesh(), options);
     reduced.draw_occluders(soup.mesh(), options);
     const std::vector<OcclusionRect> rects =
@@ -280,7 +289,7 @@ TEST_P(ReducedDepth, RectanglesNeverOccludedWhereSamplesShow) {
     for (std::size_t i = 0; i < rects.size(); ++i) {
       const bool wrong = (got[i] == Visibility::outside) != (want[i] == Visibility::outside) ||
                          (got[i] == Visibility::occluded && want[i] != Visibility::occluded);
-      ASSERT_FALSE(wrong) << "reduction " << k << ", scene " << scene << " rectangle " << i << " ["
+      ASSERT_FALSE(wrong) << mode(k, partial) << ", scene " << scene << " rectangle " << i << " ["
                           << rects[i].x0 << ", " << rects[i].x1 << "] x [" << rects[i].y0 << ", "
                           << rects[i].y1 << "] depth " << rects[i].depth << ": " << name_of(got[i])
                           << " against " << name_of(want[i]) << ", seed " << seed;
@@ -301,6 +310,7 @@ TEST_P(ReducedDepth, FacesAndBoxesNeverOccludedWhereFacesShow) {
   std::uint64_t occluded = 0, oracle_occluded = 0;
   for (int scene = 0; scene < 8; ++scene) {
     const std::int32_t k = kReductions[scene % 2];
+    const PartialCoverage partial = kPartials[(scene / 2) % 2];
     OcclusionOptions options;
     options.isa = isa();
     options.transform = random_camera(random, static_cast<float>(kViewWidth) / kViewHeight);
@@ -309,7 +319,7 @@ TEST_P(ReducedDepth, FacesAndBoxesNeverOccludedWhereFacesShow) {
       const std::vector<Vec3> faces = box_faces(wall);
       walls.insert(walls.end(), faces.begin(), faces.end());
     }
-    OcclusionBuffer full(kViewWidth, kViewHeight), reduced(kViewWidth, kViewHeight, k);
+    OcclusionBuffer full(kViewWidth, kViewHeight), reduced(kViewWidth, kViewHeight, k, partial);
     full.draw_occluders({walls, {}}, options);
     reduced.draw_occluders({walls, {}}, options);
     const std::vector<OcclusionBox> boxes = random_boxes(random, 300);
@@ -319,8 +329,8 @@ TEST_P(ReducedDepth, FacesAndBoxesNeverOccludedWhereFacesShow) {
       const std::vector<Vec3> faces = box_faces(boxes[i]);
       const Visibility oracle = full.test_triangles({faces, {}}, options);
       const Visibility triangles = reduced.test_triangles({faces, {}}, options);
-      const std::string what = "reduction " + std::to_string(k) + ", scene " +
-                               std::to_string(scene) + " box " + std::to_string(i);
+      const std::string what =
+          mode(k, partial) + ", scene " + std::to_string(scene) + " box " + std::to_string(i);
       EXPECT_EQ(triangles == Visibility::outside, oracle == Visibility::outside) << what;
       if (oracle == Visibility::visible) {
         ASSERT_EQ(triangles, Visibility::visible) << what;
@@ -351,6 +361,8 @@ TEST(ReducedDepthApi, SizesAndBadReductions) {
           << error.what();
     }
   }
+  EXPECT_THROW(OcclusionBuffer(64, 64, 2, static_cast<PartialCoverage>(7)), std::invalid_argument);
+  EXPECT_EQ(OcclusionBuffer(64, 64, 2).partial_coverage(), PartialCoverage::ignored);
   Framebuffer wrong(25, 19);
   OcclusionBuffer reduced(101, 77, 4);
   EXPECT_THROW(reduced.copy_depth(wrong), std::invalid_argument);

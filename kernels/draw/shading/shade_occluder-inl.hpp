@@ -52,6 +52,7 @@ class OccluderVisitor {
   // On a reduced buffer the walk hands on blocks, each covered when all its samples are
   // (triangle_batch-inl.hpp), and each takes the largest depth of its samples.
   std::int32_t reduction() const { return reduction_; }
+  bool merges_partial_blocks() const { return layers_ != nullptr; }
 
   // The depth planes of a group of triangles (plane_setup-inl.hpp) and their depth bounds.
   void begin_group(const GroupCorners<Arch>& corners, const TriangleGroup<Arch>& positions) {

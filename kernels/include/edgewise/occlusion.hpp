@@ -53,6 +53,15 @@ enum class Visibility : std::uint8_t {
   outside,   // no sample of the view is covered
 };
 
+// How the blocks of a reduced buffer (OcclusionBuffer's `reduction` 2 or 4) take the depth of
+// triangles that cover them only in part.
+enum class PartialCoverage : std::uint8_t {
+  ignored,  // not at all: a block takes only triangles that cover it whole (4 bytes per block)
+  merged,   // merged in a layer per block, to the largest of their depths once together they
+            // cover it: culls more, but costs per block along every triangle's edges and 12
+            // bytes per block (docs/design/occlusion.md, "Reduced resolution")
+};
+
 // Triangles for the buffer: occluders, or an object to test. Spans are read during the call.
 struct OcclusionMesh {
   std::span<const Vec3> positions;
@@ -83,14 +92,15 @@ struct OcclusionBox {
 class OcclusionBuffer {
  public:
   // A view of width x height pixels, sides 1 .. kMaxTargetSize (coverage.hpp). With `reduction`
-  // 2 or 4 the buffer keeps one depth per block of reduction x reduction pixels of the view (a
-  // quarter or a sixteenth of the memory), and what it answers stays conservative: a block
-  // holds at least every depth that the full-resolution buffer would hold at its pixels
-  // (docs/design/occlusion.md, "Reduced resolution"). Occluders then set a block only where one
-  // triangle covers all its pixels, to the largest depth it has there; copy_depth() takes each
-  // block's largest depth; queries test the blocks that hold their pixels. Throws
-  // std::invalid_argument for another size or reduction.
-  OcclusionBuffer(std::int32_t width, std::int32_t height, std::int32_t reduction = 1);
+  // 2 or 4 the buffer keeps one depth per block of reduction x reduction pixels of the view, and
+  // what it answers stays conservative: a block holds at least every depth that the
+  // full-resolution buffer would hold at its pixels (docs/design/occlusion.md, "Reduced
+  // resolution"). Occluders set a block where one triangle covers all its pixels, to the largest
+  // depth it has there, and, with `partial` merged, where triangles cover it only together;
+  // copy_depth() takes each block's largest depth; queries test the blocks that hold their
+  // pixels. Throws std::invalid_argument for another size or reduction.
+  OcclusionBuffer(std::int32_t width, std::int32_t height, std::int32_t reduction = 1,
+                  PartialCoverage partial = PartialCoverage::ignored);
   OcclusionBuffer(const OcclusionBuffer&);
   OcclusionBuffer(OcclusionBuffer&&) noexcept;
   OcclusionBuffer& operator=(const OcclusionBuffer&);
@@ -102,6 +112,7 @@ class OcclusionBuffer {
   std::int32_t height() const { return height_; }
   // Pixels of the view per depth on each axis: 1, 2 or 4.
   std::int32_t reduction() const { return reduction_; }
+  PartialCoverage partial_coverage() const { return partial_; }
   // The depths kept per row and per column: the view's sides divided by the reduction, rounded
   // up (a last block may hold fewer of the view's pixels).
   std::int32_t depth_width() const { return depth_.width(); }
@@ -168,6 +179,7 @@ class OcclusionBuffer {
   detail::SampleRect blocks_of(detail::SampleRect samples) const;
 
   std::int32_t width_, height_, reduction_;
+  PartialCoverage partial_;
 
   // The depth target; its colour is never read (the reference's draw() writes one colour).
   Framebuffer depth_;
@@ -177,8 +189,8 @@ class OcclusionBuffer {
   std::vector<detail::PlaneTile> plane_tiles_;
   std::vector<detail::PlaneSlots> plane_slots_;
   std::vector<detail::DepthPlane> planes_;
-  // Of a reduced buffer, per block: the samples that triangles covering the block in part have
-  // covered, and a depth they lie at or below.
+  // Of a reduced buffer whose partial coverage is merged, per block: the samples that triangles
+  // covering the block in part have covered, and a depth they lie at or below.
   std::vector<detail::BlockLayer> layers_;
   // The largest depth of each 8x8 tile, exact: rebuilt after every change of the depths.
   std::vector<float> tile_max_;
@@ -186,7 +198,10 @@ class OcclusionBuffer {
 
 // Names of the values (names.hpp).
 std::string_view name_of(Visibility value);
+std::string_view name_of(PartialCoverage value);
 template <>
 std::span<const Visibility> values_of<Visibility>();
+template <>
+std::span<const PartialCoverage> values_of<PartialCoverage>();
 
 }  // namespace edgewise
