@@ -23,7 +23,11 @@
 #include <bit>
 #include <cstdint>
 
+#include <xsimd/xsimd.hpp>
+
 #include "tile_walk-inl.hpp"
+#include "../simd/lane_arch-inl.hpp"
+#include "../simd/simd_ops-inl.hpp"
 #include "triangle_setup-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
@@ -69,35 +73,71 @@ inline bool reduce_setup(const TriangleSetup& view, std::int32_t k, BlockRule ru
   return out.box.x0 < out.box.x1 && out.box.y0 < out.box.y1;
 }
 
-// Which of a block's k x k samples the triangle covers, bit j k + i for sample (i, j), from
-// `blocks` (a BlockRule::all_samples set-up, whose G at a block is the view's at the corner
-// sample chosen by the steps' signs).
-inline std::uint32_t block_samples(const TriangleSetup& blocks, std::int32_t k, std::int32_t x,
-                                   std::int32_t y) {
-  std::uint32_t covered = (1u << (k * k)) - 1u;
-  for (const EdgeSetup& edge : blocks.edge) {
-    // The view's steps, and its G at the block's first sample (i = j = 0).
-    const std::int64_t a = edge.a / k, b = edge.b / k;
-    const std::int64_t first = edge.g + std::int64_t{edge.a} * (x - blocks.origin_x) +
-                               std::int64_t{edge.b} * (y - blocks.origin_y) -
-                               (k - 1) * ((a < 0 ? a : 0) + (b < 0 ? b : 0));
-    std::uint32_t inside = 0;
-    for (std::int32_t j = 0; j < k; ++j) {
-      for (std::int32_t i = 0; i < k; ++i)
-        inside |= static_cast<std::uint32_t>(first + a * i + b * j >= 0) << (j * k + i);
+// Which of a block's k x k samples a triangle covers, bit j k + i for sample (i, j), in lanes:
+// each edge's G at the samples is its value at the block's first sample plus A i + B j. That
+// first value is clamped to +-2^30, which keeps its sign at every sample (|A i + B j| <=
+// 3 (|A| + |B|) < 2^27) and every lane within int32.
+template <class Arch>
+class BlockSampleCoverage {
+ public:
+  using Ints = xsimd::batch<std::int32_t, Arch>;
+  static constexpr std::size_t kLanes = Ints::size;
+  static constexpr std::size_t kBatches = (kMaxReduction * kMaxReduction + kLanes - 1) / kLanes;
+
+  // `blocks`: a BlockRule::all_samples set-up, whose G at a block is the view's at the corner
+  // sample chosen by the steps' signs.
+  BlockSampleCoverage(const TriangleSetup& blocks, std::int32_t k)
+      : blocks_(blocks),
+        k_(k),
+        batches_((k * k + kLanes - 1) / kLanes),
+        all_((1u << (k * k)) - 1u) {
+    for (int e = 0; e < 3; ++e) {
+      a_[e] = blocks.edge[e].a / k;
+      b_[e] = blocks.edge[e].b / k;
+      alignas(64) std::int32_t offset[kBatches * kLanes] = {};
+      for (std::int32_t s = 0; s < k * k; ++s)
+        offset[s] = static_cast<std::int32_t>(a_[e] * (s % k) + b_[e] * (s / k));
+      for (std::size_t h = 0; h < kBatches; ++h)
+        offset_[e][h] = Ints::load_aligned(offset + h * kLanes);
     }
-    covered &= inside;
   }
-  return covered;
-}
+
+  // The covered samples of block (x, y).
+  [[gnu::always_inline]] std::uint32_t covered(std::int32_t x, std::int32_t y) const {
+    Ints first[3];
+    for (int e = 0; e < 3; ++e) {
+      const EdgeSetup& edge = blocks_.edge[e];
+      first[e] =
+          Ints(clamp_to_tile_range(edge.g + std::int64_t{edge.a} * (x - blocks_.origin_x) +
+                                   std::int64_t{edge.b} * (y - blocks_.origin_y) -
+                                   (k_ - 1) * ((a_[e] < 0 ? a_[e] : 0) + (b_[e] < 0 ? b_[e] : 0))));
+    }
+    std::uint32_t outside = 0;
+    for (std::size_t h = 0; h < batches_; ++h) {
+      const Ints any_outside =
+          (first[0] + offset_[0][h]) | (first[1] + offset_[1][h]) | (first[2] + offset_[2][h]);
+      outside |= sign_bits<Arch>(any_outside) << (h * kLanes);
+    }
+    return ~outside & all_;
+  }
+
+ private:
+  const TriangleSetup& blocks_;
+  const std::int32_t k_;
+  const std::size_t batches_;
+  const std::uint32_t all_;
+  std::int64_t a_[3], b_[3];  // the view's steps
+  Ints offset_[3][kBatches];
+};
 
 // The walk of a triangle's BlockRule::each_edge_some blocks, handing on to the visitor's
-// partial_block(x, y, samples) those of them that hold some covered sample but not all.
+// partial_block(x, y, samples) those of them that hold some covered sample but not all
+// (`whole`: the BlockRule::all_samples set-up; Arch: a row's lanes, RowArch).
 template <class Arch, class Visitor>
 class PartialBlocks {
  public:
   PartialBlocks(const TriangleSetup& whole, std::int32_t k, Visitor& visitor)
-      : whole_(whole), k_(k), evaluator_(whole), visitor_(visitor) {}
+      : whole_(whole), samples_(whole, k), evaluator_(whole), visitor_(visitor) {}
 
   void tile(std::uint32_t tile_x, std::uint32_t tile_y, std::uint64_t mask) {
     const std::int32_t px = static_cast<std::int32_t>(tile_x) * kTileSize;
@@ -112,7 +152,7 @@ class PartialBlocks {
     for (std::uint64_t left = mask & ~evaluator_.coverage(g); left != 0; left &= left - 1) {
       const int bit = std::countr_zero(left);
       const std::int32_t x = px + (bit & 7), y = py + (bit >> 3);
-      const std::uint32_t samples = block_samples(whole_, k_, x, y);
+      const std::uint32_t samples = samples_.covered(x, y);
       if (samples != 0) visitor_.partial_block(x, y, samples);
     }
   }
@@ -125,8 +165,8 @@ class PartialBlocks {
 
  private:
   const TriangleSetup& whole_;
-  const std::int32_t k_;
-  const TileEvaluator<Arch> evaluator_;
+  const BlockSampleCoverage<Arch> samples_;
+  const TileEvaluator<WideArch<Arch>> evaluator_;
   Visitor& visitor_;
 };
 

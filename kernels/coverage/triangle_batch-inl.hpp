@@ -116,7 +116,7 @@ inline void walk_blocks(const TriangleSetup& view, std::int32_t reduction, Visit
     if (!visitor.merges_partial_blocks()) return;
     TriangleSetup touched;
     if (!reduce_setup(view, reduction, BlockRule::each_edge_some, touched)) return;
-    PartialBlocks<WideArch<Arch>, Visitor> partial(whole, reduction, visitor);
+    PartialBlocks<Arch, Visitor> partial(whole, reduction, visitor);
     walk_reduced(touched, partial);
   }
 }

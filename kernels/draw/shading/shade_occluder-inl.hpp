@@ -47,7 +47,12 @@ class OccluderVisitor {
         first_plane_(batch.plane_tiles.first_plane),
         reduction_(batch.plane_tiles.reduction),
         layers_(batch.plane_tiles.layers),
-        all_samples_((1u << (reduction_ * reduction_)) - 1u) {}
+        all_samples_((1u << (reduction_ * reduction_)) - 1u) {
+    for (std::int32_t sample = 0; sample < kMaxReduction * kMaxReduction; ++sample) {
+      sample_column_[sample] = static_cast<float>(sample % reduction_);
+      sample_row_[sample] = static_cast<float>(sample / reduction_);
+    }
+  }
 
   // On a reduced buffer the walk hands on blocks, each covered when all its samples are
   // (triangle_batch-inl.hpp), and each takes the largest depth of its samples.
@@ -188,15 +193,8 @@ class OccluderVisitor {
     const int pixel = (y % kTileSize) * kTileSize + x % kTileSize;
     const float value =
         block_value(tile, slots_[index], batch_.depth_tiles + index * 64, pixel, x, y);
-    float farthest = 0.0f;
-    for (std::uint32_t left = samples; left != 0; left &= left - 1) {
-      const int sample = std::countr_zero(left);
-      const float z = detail::depth_at(view_plane_, reduction_ * x + sample % reduction_,
-                                       reduction_ * y + sample / reduction_);
-      farthest = z > farthest ? z : farthest;
-    }
-    const float lowered = detail::block_layer_merge(layers_[index * 64 + pixel], samples, farthest,
-                                                    value, all_samples_);
+    const float lowered = detail::block_layer_merge(
+        layers_[index * 64 + pixel], samples, farthest_sample(samples, x, y), value, all_samples_);
     if (!(lowered < value)) return;
     float* depth = batch_.depth_tiles + index * 64;
     if (tile.kind != detail::TileKind::values) {
@@ -244,6 +242,25 @@ class OccluderVisitor {
       tile.unresolved = false;
     }
     test_pixels(tile, mask, depth, px, py);
+  }
+
+  // The largest depth draw() gives the view's samples `samples` of block (x, y), in lanes: the
+  // lanes' dx, (px + 0.5) - x0 with px = k x + i, is depth_at()'s (the integers' sum is exact),
+  // and so is every other operation.
+  float farthest_sample(std::uint32_t samples, std::int32_t x, std::int32_t y) const {
+    const Floats x0(static_cast<float>(reduction_ * x)), y0(static_cast<float>(reduction_ * y));
+    Floats farthest(0.0f);
+    for (std::size_t h = 0; h * kLanes < static_cast<std::size_t>(reduction_ * reduction_); ++h) {
+      const std::uint32_t lanes = samples >> (h * kLanes);
+      const Floats dx = ((x0 + Floats::load_aligned(sample_column_ + h * kLanes)) + Floats(0.5f)) -
+                        Floats(view_plane_.x0);
+      const Floats dy = ((y0 + Floats::load_aligned(sample_row_ + h * kLanes)) + Floats(0.5f)) -
+                        Floats(view_plane_.y0);
+      const Floats z = clamp01((Floats(view_plane_.z0) + Floats(view_plane_.dzdy) * dy) +
+                               Floats(view_plane_.dzdx) * dx);
+      farthest = xsimd::max(farthest, xsimd::select(lanes_of_bits<Arch>(lanes), z, Floats(0.0f)));
+    }
+    return lane_max<Arch>(farthest);
   }
 
   // The depth that `tile` (its slots, its values `depth`) holds at `pixel`, pixel (x, y) of the
@@ -342,6 +359,9 @@ class OccluderVisitor {
   const std::int32_t reduction_;
   detail::BlockLayer* const layers_;
   const std::uint32_t all_samples_;  // a block's samples, as BlockLayer::samples names them
+  // Sample s of a block at (s % k, s / k) from its first.
+  alignas(64) float sample_column_[kMaxReduction * kMaxReduction];
+  alignas(64) float sample_row_[kMaxReduction * kMaxReduction];
   PlaneGroup<Arch> group_;
   float lowest_[kGroupLanes], highest_[kGroupLanes];
   detail::DepthPlane plane_{};
