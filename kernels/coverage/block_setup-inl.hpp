@@ -13,11 +13,11 @@
 // Overflow (triangle_setup-inl.hpp's analysis, steps k times larger): |A|, |B| < 2^24, so the
 // steps k A, k B lie below 2^26 for k <= 4. Inside a tile G varies by at most
 // 7 (|kA| + |kB|) < 7 * 2^27 < 2^30, within the walk's per-tile clamp to +-2^30 (so a clamped
-// value keeps its sign over the tile) and keeping lanes within +-(2^30 + 7 * 2^27) < 2^31;
-// a tile step 8 k A < 2^29 and the division of the tile walk's
-// ranges (quotients within 2^-40 of exact, non-integers at least 2^-29 from an integer) stay
-// exact. The narrow test is set-up's own, on the blocks' origin and reach. The span walk's
-// analysis assumes |B| < 2^25, so reduced triangles take the block and tile walks only.
+// value keeps its sign over the tile), and lanes stay within +-(2^30 + 7 * 2^27) < 2^31. A tile
+// step 8 k A is below 2^29, and the tile walk's ranges stay exact (its quotients lie within
+// 2^-40 of exact, non-integers at least 2^-29 from an integer). The narrow test is set-up's own,
+// on the blocks' origin and reach. The span walk's analysis assumes |B| < 2^25, so reduced
+// triangles take the block and tile walks only.
 #pragma once
 
 #include <bit>

@@ -2,7 +2,10 @@
 // colour. A tile the triangle lies wholly in front of, over the pixels it covers, takes the
 // triangle's plane for those pixels (masks and one plane written, no depth computed); one it lies
 // wholly behind is left; any other is worked out to 64 values and tested per pixel as draw()
-// tests it. Either way every pixel ends with the depth draw() would leave there.
+// tests it. Either way every pixel ends with the depth draw() would leave there. On a reduced
+// buffer (docs/design/occlusion.md, "Reduced resolution") the pixels are blocks of the view's
+// samples, each drawn with its largest depth (block_depth_plane()), and blocks covered in part
+// may be merged into a layer per block (partial_block()).
 //
 // "Wholly in front" is decided from bounds on the depths the triangle's covered pixels compute,
 // from its vertex depths: every covered sample lies in the closed triangle, where the plane
@@ -26,6 +29,7 @@
 #include "plane_setup-inl.hpp"
 #include "plane_tile_depths-inl.hpp"
 #include "shade_batch.hpp"
+#include "../../coverage/block_setup-inl.hpp"
 #include "../../coverage/tile_masks-inl.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
