@@ -107,18 +107,41 @@ bool some_sample_passes(const TriangleBatch& batch, const float* vertex_depth,
   return passes;
 }
 
-void copy_block_maxima(const Framebuffer& frame, const ReducedDepth& depth) {
-  const std::int32_t k = depth.reduction;
+namespace {
+
+// copy_block_maxima() for blocks of K x K.
+template <std::int32_t K>
+void copy_maxima(const Framebuffer& frame, const ReducedDepth& depth) {
   const std::int32_t width = frame.width(), height = frame.height();
-  for (std::int32_t y = 0; y < (height + k - 1) / k; ++y) {
-    for (std::int32_t x = 0; x < (width + k - 1) / k; ++x) {
-      float farthest = 0.0f;
-      for (std::int32_t j = k * y; j < std::min(k * y + k, height); ++j) {
-        for (std::int32_t i = k * x; i < std::min(k * x + k, width); ++i)
-          farthest = std::max(farthest, frame.depth(i, j));
+  const std::int32_t tiles_x = frame.tiles_x(), tiles_y = (height + kTileSize - 1) / kTileSize;
+  constexpr std::int32_t kBlocks = kTileSize / K;  // per side of a tile
+  // K divides the tile's side, so each block lies in one tile of the frame: a tile at a time,
+  // its values read in order, each block's maximum written once.
+  for (std::int32_t ty = 0; ty < tiles_y; ++ty) {
+    for (std::int32_t tx = 0; tx < tiles_x; ++tx) {
+      const float* tile = frame.depth_tiles() + (static_cast<std::size_t>(ty) * tiles_x + tx) * 64;
+      const std::int32_t rows = std::min(kTileSize, height - ty * kTileSize);
+      const std::int32_t columns = std::min(kTileSize, width - tx * kTileSize);
+      float farthest[kBlocks][kBlocks] = {};
+      for (std::int32_t r = 0; r < rows; ++r) {
+        for (std::int32_t c = 0; c < columns; ++c)
+          farthest[r / K][c / K] = std::max(farthest[r / K][c / K], tile[r * kTileSize + c]);
       }
-      depth_of(depth, x, y) = farthest;
+      for (std::int32_t by = 0; by < (rows + K - 1) / K; ++by) {
+        for (std::int32_t bx = 0; bx < (columns + K - 1) / K; ++bx)
+          depth_of(depth, tx * kBlocks + bx, ty * kBlocks + by) = farthest[by][bx];
+      }
     }
+  }
+}
+
+}  // namespace
+
+void copy_block_maxima(const Framebuffer& frame, const ReducedDepth& depth) {
+  if (depth.reduction == 2) {
+    copy_maxima<2>(frame, depth);
+  } else {
+    copy_maxima<4>(frame, depth);
   }
 }
 
