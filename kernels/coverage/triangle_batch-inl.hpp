@@ -47,6 +47,20 @@ inline bool prefers_span_walk(const PixelRect& box) {
   return std::int64_t{box.x1 - box.x0} * (box.y1 - box.y0) >= kSpanWalkMinBoxArea;
 }
 
+// The block walks for boxes up to 16x16 pixels, else the tile walk: every walk but the spans.
+template <class Visitor>
+inline void walk_block_or_tiles(const TriangleSetup& setup, Visitor& visitor) {
+  if (setup.narrow && setup.extent <= kTileSize) {
+    walk_block<Arch>(setup, visitor);
+  } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
+    walk_block_16<Arch>(setup, visitor);
+  } else if (setup.narrow) {
+    walk_tiles<Arch, std::int32_t>(setup, visitor);
+  } else {
+    walk_tiles<Arch, std::int64_t>(setup, visitor);
+  }
+}
+
 // The walk a drawn, visible triangle takes. The block walks are chosen by the unclipped box
 // (setup.extent), which holds the clipped one: a triangle takes the same walk whichever bin it is
 // drawn in.
@@ -58,17 +72,12 @@ inline void walk_triangle(const TriangleSetup& setup, Visitor& visitor) {
       return;
     }
   }
-  if (setup.narrow && setup.extent <= kTileSize) {
-    walk_block<Arch>(setup, visitor);
-  } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
-    walk_block_16<Arch>(setup, visitor);
-  } else if (prefers_span_walk(setup.box) && span_walk_fits(setup)) {
+  const bool block = setup.narrow && setup.extent <= 2 * kTileSize;
+  if (!block && prefers_span_walk(setup.box) && span_walk_fits(setup)) {
     walk_spans<Arch>(setup, visitor);
-  } else if (setup.narrow) {
-    walk_tiles<Arch, std::int32_t>(setup, visitor);
-  } else {
-    walk_tiles<Arch, std::int64_t>(setup, visitor);
+    return;
   }
+  walk_block_or_tiles(setup, visitor);
 }
 
 // A visitor of every sample of the batch's pattern (multisample_tile), rather than of pixel
@@ -91,33 +100,20 @@ concept ReducingVisitor = requires(const Visitor& visitor) {
   { visitor.reduction() } -> std::same_as<std::int32_t>;
 };
 
-// The block and tile walks of a reduced set-up (reduce_setup()).
-template <class Visitor>
-inline void walk_reduced(const TriangleSetup& setup, Visitor& visitor) {
-  if (setup.narrow && setup.extent <= kTileSize) {
-    walk_block<Arch>(setup, visitor);
-  } else if (setup.narrow && setup.extent <= 2 * kTileSize) {
-    walk_block_16<Arch>(setup, visitor);
-  } else if (setup.narrow) {
-    walk_tiles<Arch, std::int32_t>(setup, visitor);
-  } else {
-    walk_tiles<Arch, std::int64_t>(setup, visitor);
-  }
-}
-
-// A triangle's blocks on a reduced target: those it covers whole, then, for a visitor that
-// takes them (partial_block, when merges_partial_blocks()), those it covers in part.
+// A triangle's blocks on a reduced target (reduce_setup(); not by spans, block_setup-inl.hpp
+// says why): those it covers whole, then, for a visitor that takes them (partial_block, when
+// merges_partial_blocks()), those it covers in part.
 template <class Visitor>
 inline void walk_blocks(const TriangleSetup& view, std::int32_t reduction, Visitor& visitor) {
   TriangleSetup whole;
   if (!reduce_setup(view, reduction, BlockRule::all_samples, whole)) return;
-  walk_reduced(whole, visitor);
+  walk_block_or_tiles(whole, visitor);
   if constexpr (requires { visitor.partial_block(0, 0, 0u); }) {
     if (!visitor.merges_partial_blocks()) return;
     TriangleSetup touched;
     if (!reduce_setup(view, reduction, BlockRule::each_edge_some, touched)) return;
     PartialBlocks<Arch, Visitor> partial(whole, reduction, visitor);
-    walk_reduced(touched, partial);
+    walk_block_or_tiles(touched, partial);
   }
 }
 
