@@ -77,8 +77,13 @@ struct ScreenMesh;
   /* Exact-area coverage (pixel_area.hpp): each triangle's pixel areas to a sink. */               \
   X(rasterize_areas,                                                                               \
     void(const detail::TriangleBatch& batch, AreaSink& sink, RasterReport& report))                \
-  /* Occlusion (occlusion.hpp): rectangles of samples against the depths, and each tile's largest  \
-     depth for tiles [first, last). */                                                             \
+  /* Occlusion (occlusion.hpp): rectangles to the ranges of samples (or blocks of `reduction`      \
+     samples) they hold, as rect_samples() and sample_blocks() make them, returning `count`, or    \
+     the index of the first rectangle rect_samples() rejects; rectangles of samples against the    \
+     depths, and each tile's largest depth for tiles [first, last). */                             \
+  X(rect_sample_ranges,                                                                            \
+    std::size_t(const OcclusionRect* rects, std::size_t count, std::int32_t width,                 \
+                std::int32_t height, std::int32_t reduction, detail::SampleRect* out))             \
   X(test_sample_rects, void(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,  \
                             std::size_t count, Visibility* out))                                   \
   X(occlusion_tile_maxima,                                                                         \

@@ -283,8 +283,13 @@ void OcclusionBuffer::test_rects(std::span<const OcclusionRect> rects, std::span
   std::array<detail::SampleRect, kQueriesPerChunk> samples;
   for (std::size_t first = 0; first < rects.size(); first += kQueriesPerChunk) {
     const std::size_t count = std::min(kQueriesPerChunk, rects.size() - first);
-    for (std::size_t i = 0; i < count; ++i)
-      samples[i] = blocks_of(detail::rect_samples(rects[first + i], width(), height(), first + i));
+    const std::size_t valid = kernels.rect_sample_ranges(rects.data() + first, count, width(),
+                                                         height(), reduction_, samples.data());
+    // The rest one at a time: rect_samples() throws for the first, naming it and the reason.
+    for (std::size_t i = valid; i < count; ++i) {
+      samples[i] = detail::sample_blocks(
+          detail::rect_samples(rects[first + i], width(), height(), first + i), reduction_);
+    }
     kernels.test_sample_rects(depth, samples.data(), count, out.data() + first);
   }
 }
@@ -303,7 +308,8 @@ void OcclusionBuffer::test_boxes(std::span<const OcclusionBox> boxes, const Mat4
     for (std::size_t i = 0; i < count; ++i) {
       const detail::BoxSamples box =
           detail::box_samples(boxes[first + i], transform, viewport, planes, first + i);
-      samples[i] = blocks_of(box.samples);  // empty, so outside, unless bounded
+      // Empty, so outside, unless bounded.
+      samples[i] = detail::sample_blocks(box.samples, reduction_);
       unbounded[i] = box.reach == detail::BoxReach::unbounded;
     }
     kernels.test_sample_rects(depth, samples.data(), count, out.data() + first);
@@ -311,17 +317,6 @@ void OcclusionBuffer::test_boxes(std::span<const OcclusionBox> boxes, const Mat4
       if (unbounded[i]) out[first + i] = Visibility::visible;
     }
   }
-}
-
-detail::SampleRect OcclusionBuffer::blocks_of(detail::SampleRect samples) const {
-  if (reduction_ > 1 && samples.x0 <= samples.x1 && samples.y0 <= samples.y1) {
-    // The blocks that hold the samples (non-negative: plain division rounds down).
-    samples.x0 /= reduction_;
-    samples.y0 /= reduction_;
-    samples.x1 /= reduction_;
-    samples.y1 /= reduction_;
-  }
-  return samples;
 }
 
 std::string_view name_of(Visibility value) {

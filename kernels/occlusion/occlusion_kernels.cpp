@@ -3,12 +3,19 @@
 #include "../core/isa_build.hpp"
 
 #include "../draw/shading/plane_tile_depths-inl.hpp"
+#include "rect_ranges-inl.hpp"
 #include "rect_test-inl.hpp"
 #include "../core/isa_kernels.hpp"
 
 namespace edgewise::EDGEWISE_ISA_NAMESPACE {
 
 using Arch = RowArch<EDGEWISE_ARCH>;
+
+std::size_t rect_sample_ranges(const OcclusionRect* rects, std::size_t count, std::int32_t width,
+                               std::int32_t height, std::int32_t reduction,
+                               detail::SampleRect* out) {
+  return rect_ranges<Arch>(rects, count, width, height, reduction, out);
+}
 
 void test_sample_rects(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,
                        std::size_t count, Visibility* out) {

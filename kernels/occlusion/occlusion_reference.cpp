@@ -6,8 +6,19 @@
 
 #include "../core/reference_kernels.hpp"
 #include "../draw/shading/plane_tiles.hpp"
+#include "query_bounds.hpp"
 
 namespace edgewise::reference {
+
+std::size_t rect_sample_ranges(const OcclusionRect* rects, std::size_t count, std::int32_t width,
+                               std::int32_t height, std::int32_t reduction,
+                               detail::SampleRect* out) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!detail::rect_sample_range(rects[i], width, height, out[i])) return i;
+    out[i] = detail::sample_blocks(out[i], reduction);
+  }
+  return count;
+}
 
 void test_sample_rects(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,
                        std::size_t count, Visibility* out) {

@@ -73,22 +73,29 @@ void steepest_slopes(const Vec2 (&p)[8], const float (&z)[8], double& sx, double
 
 }  // namespace
 
-SampleRect rect_samples(const OcclusionRect& rect, std::int32_t width, std::int32_t height,
-                        std::size_t index) {
-  const auto fail = [&](const char* why) {
-    throw std::invalid_argument("test_rects: rectangle " + std::to_string(index) + " " + why);
-  };
+bool rect_sample_range(const OcclusionRect& rect, std::int32_t width, std::int32_t height,
+                       SampleRect& out) {
   if (std::isnan(rect.x0) || std::isnan(rect.y0) || std::isnan(rect.x1) || std::isnan(rect.y1) ||
-      std::isnan(rect.depth)) {
-    fail("has a NaN coordinate or depth");
+      std::isnan(rect.depth) || rect.x0 > rect.x1 || rect.y0 > rect.y1) {
+    return false;
   }
-  if (rect.x0 > rect.x1 || rect.y0 > rect.y1) fail("is inverted (x0 > x1 or y0 > y1)");
-  SampleRect out;
-  if (rect.depth > 1.0f) return out;  // beyond the far plane: nothing drawn
+  out = SampleRect{};
+  if (rect.depth > 1.0f) return true;  // beyond the far plane: nothing drawn
   sample_range(rect.x0, rect.x1, width, out.x0, out.x1);
   sample_range(rect.y0, rect.y1, height, out.y0, out.y1);
   out.depth = rect.depth;
-  return out;
+  return true;
+}
+
+SampleRect rect_samples(const OcclusionRect& rect, std::int32_t width, std::int32_t height,
+                        std::size_t index) {
+  SampleRect out;
+  if (rect_sample_range(rect, width, height, out)) return out;
+  const bool has_nan = std::isnan(rect.x0) || std::isnan(rect.y0) || std::isnan(rect.x1) ||
+                       std::isnan(rect.y1) || std::isnan(rect.depth);
+  throw std::invalid_argument(
+      "test_rects: rectangle " + std::to_string(index) + " " +
+      (has_nan ? "has a NaN coordinate or depth" : "is inverted (x0 > x1 or y0 > y1)"));
 }
 
 // A face's sample at depth formula value v = (z0 + dzdy dy) + dzdx dx, every operation rounded

@@ -19,6 +19,22 @@ namespace edgewise::detail {
 SampleRect rect_samples(const OcclusionRect& rect, std::int32_t width, std::int32_t height,
                         std::size_t index);
 
+// rect_samples() without the throw: false for a rectangle it rejects, `out` then unspecified.
+bool rect_sample_range(const OcclusionRect& rect, std::int32_t width, std::int32_t height,
+                       SampleRect& out);
+
+// A range of the view's samples as the range of blocks of `reduction` x `reduction` samples that
+// hold them (non-negative, so plain division rounds down); an empty range stays as it is.
+inline SampleRect sample_blocks(SampleRect samples, std::int32_t reduction) {
+  if (reduction > 1 && samples.x0 <= samples.x1 && samples.y0 <= samples.y1) {
+    samples.x0 /= reduction;
+    samples.y0 /= reduction;
+    samples.x1 /= reduction;
+    samples.y1 /= reduction;
+  }
+  return samples;
+}
+
 enum class BoxReach : std::uint8_t {
   bounded,    // `samples` bounds what the box's faces cover, and the depth they get
   outside,    // every corner beyond one plane of the view volume

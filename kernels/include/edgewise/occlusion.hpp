@@ -175,8 +175,6 @@ class OcclusionBuffer {
   // Occluders into a reduced buffer by the scalar reference.
   DrawReport draw_blocks_reference(const DrawMesh& mesh, const DrawOptions& options);
   detail::ReducedDepth reduced_depth();
-  // A range of the view's samples as the range of blocks that hold them.
-  detail::SampleRect blocks_of(detail::SampleRect samples) const;
 
   std::int32_t width_, height_, reduction_;
   PartialCoverage partial_;
