@@ -43,11 +43,29 @@ template <class Arch>
   return above;
 }
 
-// Visible when some sample of the rectangle holds a depth above the rectangle's. A tile row's
-// maxima are compared a batch of tiles at a time, and only the tiles whose maximum lies above the
-// depth are looked into: a tile wholly inside the rectangle is then visible at once (its maximum
-// is one of the rectangle's samples), the others are compared sample by sample. The maxima array
-// holds kTileMaximaPadding entries past its last tile, so that a batch may read past a row's end.
+// Whether a sample of the rectangle in the tiles of bits `above` (tile tx + bit, ty), whose
+// maxima lie above the rectangle's depth, does too: a tile wholly inside the rectangle does at
+// once (its maximum is one of the rectangle's samples), the others are compared sample by sample.
+template <class Arch>
+[[gnu::noinline]] bool some_sample_above(const detail::OcclusionDepth& depth,
+                                         const detail::SampleRect& r, std::int32_t tx,
+                                         std::int32_t ty, std::uint32_t above) {
+  const bool rows_whole = r.y0 <= ty * 8 && r.y1 >= ty * 8 + 7;
+  for (; above != 0; above &= above - 1) {
+    const std::int32_t t = tx + std::countr_zero(above);
+    if (rows_whole && r.x0 <= t * 8 && r.x1 >= t * 8 + 7) return true;
+    const std::size_t tile = static_cast<std::size_t>(ty) * depth.tiles_x + t;
+    if ((depths_above<Arch>(depth.tiles + tile * 64, r.depth) & rect_tile_mask(r, t, ty)) != 0)
+      return true;
+  }
+  return false;
+}
+
+// Visible when some sample of the rectangle holds a depth above the rectangle's. The maxima of a
+// column of tiles a batch of lanes wide (one batch for rectangles up to that many tiles across)
+// are compared row after row, and only the tiles whose maximum lies above the depth are looked
+// into (some_sample_above(), out of line: most rows have none). The maxima array holds
+// kTileMaximaPadding entries past its last tile, so that a batch may read past a row's end.
 template <class Arch>
 Visibility test_rect(const detail::OcclusionDepth& depth, const detail::SampleRect& r) {
   using Floats = xsimd::batch<float, Arch>;
@@ -55,21 +73,17 @@ Visibility test_rect(const detail::OcclusionDepth& depth, const detail::SampleRe
   static_assert(kLanes <= detail::kTileMaximaPadding);
   if (r.x0 > r.x1 || r.y0 > r.y1) return Visibility::outside;
   const Floats limit(r.depth);
-  const std::int32_t tx0 = r.x0 >> 3, tx1 = r.x1 >> 3;
-  for (std::int32_t ty = r.y0 >> 3; ty <= r.y1 >> 3; ++ty) {
-    const bool rows_whole = r.y0 <= ty * 8 && r.y1 >= ty * 8 + 7;
-    const float* row = depth.tile_max + static_cast<std::size_t>(ty) * depth.tiles_x;
-    for (std::int32_t tx = tx0; tx <= tx1; tx += kLanes) {
-      const std::int32_t lanes = std::min(kLanes, tx1 - tx + 1);
-      std::uint32_t above = bits_of_lanes<Arch>(Floats::load_unaligned(row + tx) > limit) &
-                            ((2u << (lanes - 1)) - 1u);
-      for (; above != 0; above &= above - 1) {
-        const std::int32_t t = tx + std::countr_zero(above);
-        if (rows_whole && r.x0 <= t * 8 && r.x1 >= t * 8 + 7) return Visibility::visible;
-        const std::size_t tile = static_cast<std::size_t>(ty) * depth.tiles_x + t;
-        if ((depths_above<Arch>(depth.tiles + tile * 64, r.depth) & rect_tile_mask(r, t, ty)) != 0)
-          return Visibility::visible;
-      }
+  const std::int32_t tx1 = r.x1 >> 3, ty0 = r.y0 >> 3, ty1 = r.y1 >> 3;
+  const std::size_t stride = static_cast<std::size_t>(depth.tiles_x);
+  for (std::int32_t tx = r.x0 >> 3; tx <= tx1; tx += kLanes) {
+    const std::int32_t lanes = std::min(kLanes, tx1 - tx + 1);
+    const std::uint32_t wanted = (2u << (lanes - 1)) - 1u;
+    const float* maxima = depth.tile_max + static_cast<std::size_t>(ty0) * stride + tx;
+    for (std::int32_t ty = ty0; ty <= ty1; ++ty, maxima += stride) {
+      const std::uint32_t above =
+          bits_of_lanes<Arch>(Floats::load_unaligned(maxima) > limit) & wanted;
+      if (above != 0 && some_sample_above<Arch>(depth, r, tx, ty, above))
+        return Visibility::visible;
     }
   }
   return Visibility::occluded;
