@@ -325,12 +325,27 @@ template <std::size_t N, class Visitor>
                                                      Visitor& visitor) {
   if constexpr (requires { visitor.tile_grid(tile_x, tile_y, masks); }) {
     visitor.tile_grid(tile_x, tile_y, masks);
-  } else {
+  } else if constexpr (requires { Visitor::kTakesEmptyMasks; }) {
     for (std::uint32_t row = 0; row < N; ++row) {
       for (std::uint32_t column = 0; column < N; ++column) {
         deliver_tile(visitor, tile_x + column, tile_y + row, masks[row][column]);
       }
     }
+  } else {
+    // The covered tiles listed first, without a branch per tile: which of a small triangle's
+    // tiles are empty follows no pattern a predictor could learn.
+    std::uint64_t covered[N * N];
+    std::uint32_t where[N * N];
+    std::uint32_t count = 0;
+    for (std::uint32_t row = 0; row < N; ++row) {
+      for (std::uint32_t column = 0; column < N; ++column) {
+        covered[count] = masks[row][column];
+        where[count] = row * N + column;
+        count += masks[row][column] != 0;
+      }
+    }
+    for (std::uint32_t i = 0; i < count; ++i)
+      visitor.tile(tile_x + where[i] % N, tile_y + where[i] / N, covered[i]);
   }
 }
 
