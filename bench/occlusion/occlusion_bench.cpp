@@ -4,6 +4,8 @@
 // 2x2 or 4x4 pixels (`reduction`, partial coverage ignored, or `merged`).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -13,6 +15,9 @@
 #include "edgewise/edgewise.hpp"
 #include "fillrate_triangles.hpp"
 #include "occlusion_workloads.hpp"
+#if defined(EDGEWISE_BENCH_FLOOR)
+#include "exact_depth_floor.hpp"
+#endif
 
 namespace edgewise::bench {
 namespace {
@@ -74,6 +79,52 @@ void occluder_fill(benchmark::State& state, Isa isa, int size, std::size_t threa
       static_cast<double>(report.fragments_passed) * iterations, benchmark::Counter::kIsRate);
 }
 
+#if defined(EDGEWISE_BENCH_FLOOR)
+// The fill-rate triangles drawn by the floor of exact depth's cost (exact_depth_floor.hpp). Its
+// depths and written pixels must be draw_occluders()'s, bit for bit, or it measured something
+// else.
+void occluder_floor(benchmark::State& state, int size) {
+  const FillrateTriangles& triangles = fillrate_triangles(size, fillrate_count(size));
+  FloorDepth floor;
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::fill(floor.depth.begin(), floor.depth.end(), 1.0f);
+    floor.passed = 0;
+    state.ResumeTiming();
+    draw_exact_depth_floor(triangles, floor);
+    benchmark::DoNotOptimize(floor.depth.data());
+  }
+  OcclusionBuffer buffer(kWidth, kHeight);
+  OcclusionOptions options;
+  options.isa = Isa::avx2;
+  options.threads = 1;
+  const DrawReport report = buffer.draw_occluders({triangles.ndc, {}}, options);
+  std::vector<float> want(static_cast<std::size_t>(kWidth) * kHeight);
+  buffer.read_depth(want);
+  std::string error;
+  for (int y = 0; y < kHeight && error.empty(); ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const float got = floor.at(x, y), expected = want[static_cast<std::size_t>(y) * kWidth + x];
+      if (std::bit_cast<std::uint32_t>(got) != std::bit_cast<std::uint32_t>(expected)) {
+        error = "depth at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                ") differs from draw_occluders()'s";
+        break;
+      }
+    }
+  }
+  if (error.empty() && floor.passed != report.fragments_passed) {
+    error = "wrote " + std::to_string(floor.passed) + " pixels, draw_occluders() " +
+            std::to_string(report.fragments_passed);
+  }
+  if (!error.empty()) state.SkipWithError(error.c_str());
+  const double iterations = static_cast<double>(state.iterations());
+  state.counters["triangles"] = benchmark::Counter(
+      static_cast<double>(triangles.triangles()) * iterations, benchmark::Counter::kIsRate);
+  state.counters["pixels"] = benchmark::Counter(static_cast<double>(floor.passed) * iterations,
+                                                benchmark::Counter::kIsRate);
+}
+#endif
+
 void rect_query_rate(benchmark::State& state, Isa isa, Reduction reduction) {
   const OcclusionBuffer& buffer = query_scene(isa, reduction.pixels, reduction.partial);
   const std::vector<OcclusionRect>& rects = query_rects();
@@ -109,6 +160,17 @@ void register_occlusion_benchmarks() {
       }
     }
   }
+#if defined(EDGEWISE_BENCH_FLOOR)
+  const auto isas = supported_isas();
+  if (std::find(isas.begin(), isas.end(), Isa::avx2) != isas.end()) {
+    for (const int size : kFillrateSizes) {
+      const std::string name = "OccluderFloor/avx2/size:" + std::to_string(size);
+      benchmark::RegisterBenchmark(name.c_str(), occluder_floor, size)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  }
+#endif
   for (const Reduction& reduction : kReductions) {
     for (Isa isa : supported_isas()) {
       const std::string name = "RectQueries/" + std::string(name_of(isa)) + reduction.name();
