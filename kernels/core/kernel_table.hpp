@@ -21,10 +21,12 @@
 
 namespace edgewise {
 struct DrawReport;
-}
+struct GuardBandPlanes;
+}  // namespace edgewise
 
 namespace edgewise::detail {
 
+struct BoxSamples;
 struct PlaneTiles;
 struct ShadeBatch;
 struct ShadeCounts;
@@ -84,6 +86,11 @@ struct ScreenMesh;
   X(rect_sample_ranges,                                                                            \
     std::size_t(const OcclusionRect* rects, std::size_t count, std::int32_t width,                 \
                 std::int32_t height, std::int32_t reduction, detail::SampleRect* out))             \
+  /* Boxes to the samples their faces may cover under `to_clip`, as box_samples() finds them,      \
+     returning `count`, or the index of the first box box_samples() rejects. */                    \
+  X(box_sample_ranges,                                                                             \
+    std::size_t(const OcclusionBox* boxes, std::size_t count, const Mat4& to_clip,                 \
+                const Viewport& viewport, const GuardBandPlanes& planes, detail::BoxSamples* out)) \
   X(test_sample_rects, void(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,  \
                             std::size_t count, Visibility* out))                                   \
   X(occlusion_tile_maxima,                                                                         \

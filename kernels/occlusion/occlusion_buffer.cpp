@@ -301,20 +301,22 @@ void OcclusionBuffer::test_boxes(std::span<const OcclusionBox> boxes, const Mat4
   const detail::OcclusionDepth depth{depth_.depth_tiles(), tile_max_.data(), depth_.tiles_x()};
   const Viewport viewport{width(), height()};
   const GuardBandPlanes planes = guard_band_planes(viewport);
+  std::array<detail::BoxSamples, kQueriesPerChunk> bounds;
   std::array<detail::SampleRect, kQueriesPerChunk> samples;
-  std::array<bool, kQueriesPerChunk> unbounded;
   for (std::size_t first = 0; first < boxes.size(); first += kQueriesPerChunk) {
     const std::size_t count = std::min(kQueriesPerChunk, boxes.size() - first);
+    const std::size_t valid = kernels.box_sample_ranges(boxes.data() + first, count, transform,
+                                                        viewport, planes, bounds.data());
+    // box_samples() throws for the first box the kernel rejected, naming it and the reason.
+    if (valid < count)
+      detail::box_samples(boxes[first + valid], transform, viewport, planes, first + valid);
     for (std::size_t i = 0; i < count; ++i) {
-      const detail::BoxSamples box =
-          detail::box_samples(boxes[first + i], transform, viewport, planes, first + i);
       // Empty, so outside, unless bounded.
-      samples[i] = detail::sample_blocks(box.samples, reduction_);
-      unbounded[i] = box.reach == detail::BoxReach::unbounded;
+      samples[i] = detail::sample_blocks(bounds[i].samples, reduction_);
     }
     kernels.test_sample_rects(depth, samples.data(), count, out.data() + first);
     for (std::size_t i = 0; i < count; ++i) {
-      if (unbounded[i]) out[first + i] = Visibility::visible;
+      if (bounds[i].reach == detail::BoxReach::unbounded) out[first + i] = Visibility::visible;
     }
   }
 }

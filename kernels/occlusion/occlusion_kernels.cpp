@@ -3,6 +3,7 @@
 #include "../core/isa_build.hpp"
 
 #include "../draw/shading/plane_tile_depths-inl.hpp"
+#include "box_ranges-inl.hpp"
 #include "rect_ranges-inl.hpp"
 #include "rect_test-inl.hpp"
 #include "../core/isa_kernels.hpp"
@@ -15,6 +16,12 @@ std::size_t rect_sample_ranges(const OcclusionRect* rects, std::size_t count, st
                                std::int32_t height, std::int32_t reduction,
                                detail::SampleRect* out) {
   return rect_ranges<Arch>(rects, count, width, height, reduction, out);
+}
+
+std::size_t box_sample_ranges(const OcclusionBox* boxes, std::size_t count, const Mat4& to_clip,
+                              const Viewport& viewport, const GuardBandPlanes& planes,
+                              detail::BoxSamples* out) {
+  return box_ranges<Arch>(boxes, count, to_clip, viewport, planes, out);
 }
 
 void test_sample_rects(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,

@@ -20,6 +20,16 @@ std::size_t rect_sample_ranges(const OcclusionRect* rects, std::size_t count, st
   return count;
 }
 
+std::size_t box_sample_ranges(const OcclusionBox* boxes, std::size_t count, const Mat4& to_clip,
+                              const Viewport& viewport, const GuardBandPlanes& planes,
+                              detail::BoxSamples* out) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!detail::valid_box(boxes[i])) return i;
+    out[i] = detail::box_samples(boxes[i], to_clip, viewport, planes, i);
+  }
+  return count;
+}
+
 void test_sample_rects(const detail::OcclusionDepth& depth, const detail::SampleRect* rects,
                        std::size_t count, Visibility* out) {
   for (std::size_t i = 0; i < count; ++i) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -35,39 +36,25 @@ float float_below(double value) {
   return f;
 }
 
-// Corner k of the box: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
-Vec3 corner(const OcclusionBox& box, int k) {
-  return {(k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
-          (k & 4) ? box.max.z : box.min.z};
-}
-
-// The six faces as quads of corners, in order around each.
-constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
-                              {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
-
-// The largest |dz/dx| and |dz/dy| of every triangle a face can be cut into (both diagonals), from
+// The largest |dz/dx| and |dz/dy| of every triangle a face can be cut into (kFaceTriangles), from
 // the snapped corners as make_depth_plane() takes them, with one reciprocal per triangle in place
 // of its two divisions: within a few 2^-53 of the set-up's values before they are rounded to
 // float, well inside the margin's factor of two.
 void steepest_slopes(const Vec2 (&p)[8], const float (&z)[8], double& sx, double& sy) {
   sx = 0.0;
   sy = 0.0;
-  for (const auto& face : kFaces) {
-    for (int skip = 0; skip < 4; ++skip) {
-      const int a = face[skip == 0 ? 1 : 0];
-      const int b = face[skip <= 1 ? 2 : 1];
-      const int c = face[skip <= 2 ? 3 : 2];
-      const double x1 = static_cast<double>(p[b].x) - p[a].x,
-                   y1 = static_cast<double>(p[b].y) - p[a].y;
-      const double x2 = static_cast<double>(p[c].x) - p[a].x,
-                   y2 = static_cast<double>(p[c].y) - p[a].y;
-      const double z1 = static_cast<double>(z[b]) - z[a], z2 = static_cast<double>(z[c]) - z[a];
-      const double area = x1 * y2 - y1 * x2;
-      if (area == 0.0) continue;  // covers nothing
-      const double inverse = 1.0 / std::fabs(area);
-      sx = std::max(sx, std::fabs(z1 * y2 - z2 * y1) * inverse);
-      sy = std::max(sy, std::fabs(z2 * x1 - z1 * x2) * inverse);
-    }
+  for (const FaceTriangle& t : kFaceTriangles) {
+    const double x1 = static_cast<double>(p[t.b].x) - p[t.a].x,
+                 y1 = static_cast<double>(p[t.b].y) - p[t.a].y;
+    const double x2 = static_cast<double>(p[t.c].x) - p[t.a].x,
+                 y2 = static_cast<double>(p[t.c].y) - p[t.a].y;
+    const double z1 = static_cast<double>(z[t.b]) - z[t.a],
+                 z2 = static_cast<double>(z[t.c]) - z[t.a];
+    const double area = x1 * y2 - y1 * x2;
+    if (area == 0.0) continue;  // covers nothing
+    const double inverse = 1.0 / std::fabs(area);
+    sx = std::max(sx, std::fabs(z1 * y2 - z2 * y1) * inverse);
+    sy = std::max(sy, std::fabs(z2 * x1 - z1 * x2) * inverse);
   }
 }
 
@@ -98,6 +85,14 @@ SampleRect rect_samples(const OcclusionRect& rect, std::int32_t width, std::int3
       (has_nan ? "has a NaN coordinate or depth" : "is inverted (x0 > x1 or y0 > y1)"));
 }
 
+bool valid_box(const OcclusionBox& box) {
+  const float coordinates[6] = {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z};
+  for (const float c : coordinates) {
+    if (!std::isfinite(c)) return false;
+  }
+  return box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z;
+}
+
 // A face's sample at depth formula value v = (z0 + dzdy dy) + dzdx dx, every operation rounded
 // to float (depth_plane.hpp), lies within about 4 u M of the plane through the snapped corners,
 // M = |z0| + |dzdy| |dy| + |dzdx| |dx| and u = 2^-24: one rounding per operation (3 u M) and the
@@ -107,25 +102,36 @@ SampleRect rect_samples(const OcclusionRect& rect, std::int32_t width, std::int3
 // box's screen extent (a covered sample and the first corner both lie in it); clamping only
 // raises a value. The steepest slopes of all 24 triangles the faces can be cut into make the
 // bound hold for every triangulation and vertex order of the faces.
+BoxSamples bounded_box_samples(const BoxExtent& extent, const Viewport& viewport) {
+  const double reach = 1.0 + extent.slope_x * (static_cast<double>(extent.max_x) - extent.min_x) +
+                       extent.slope_y * (static_cast<double>(extent.max_y) - extent.min_y);
+  const double lowest = static_cast<double>(extent.min_z) - 8.0 * 0x1p-24 * reach;
+  BoxSamples out;
+  out.reach = BoxReach::bounded;
+  sample_range(extent.min_x, extent.max_x, viewport.width, out.samples.x0, out.samples.x1);
+  sample_range(extent.min_y, extent.max_y, viewport.height, out.samples.y0, out.samples.y1);
+  out.samples.depth = lowest > 0.0 ? float_below(lowest) : 0.0f;
+  if (out.samples.x0 > out.samples.x1 || out.samples.y0 > out.samples.y1)
+    out.reach = BoxReach::outside;
+  return out;
+}
+
 BoxSamples box_samples(const OcclusionBox& box, const Mat4& to_clip, const Viewport& viewport,
                        const GuardBandPlanes& planes, std::size_t index) {
-  const float coordinates[6] = {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z};
-  for (const float c : coordinates) {
-    if (!std::isfinite(c)) {
-      throw std::invalid_argument("test_boxes: box " + std::to_string(index) +
-                                  " has a non-finite coordinate");
-    }
-  }
-  if (box.min.x > box.max.x || box.min.y > box.max.y || box.min.z > box.max.z) {
-    throw std::invalid_argument("test_boxes: box " + std::to_string(index) +
-                                " is inverted (min > max on an axis)");
+  if (!valid_box(box)) {
+    const float coordinates[6] = {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z};
+    const bool finite = std::all_of(std::begin(coordinates), std::end(coordinates),
+                                    [](float c) { return std::isfinite(c); });
+    throw std::invalid_argument(
+        "test_boxes: box " + std::to_string(index) +
+        (finite ? " is inverted (min > max on an axis)" : " has a non-finite coordinate"));
   }
   BoxSamples out;
   Vec4 clip[8];
   std::uint16_t outside_all = 0xFFFF;
   bool all_checked = true, all_inside = true;
   for (int k = 0; k < 8; ++k) {
-    clip[k] = transform(to_clip, corner(box, k));
+    clip[k] = transform(to_clip, box_corner(box, k));
     const ClipClass c = classify_clip_vertex(clip[k], planes);
     outside_all &= c.outside_frustum;
     all_checked = all_checked && c.checked;
@@ -138,30 +144,25 @@ BoxSamples box_samples(const OcclusionBox& box, const Mat4& to_clip, const Viewp
   if (!all_inside) return out;  // unbounded
   Vec2 p[8];
   float z[8];
-  float min_x = std::numeric_limits<float>::infinity(), max_x = -min_x;
-  float min_y = min_x, max_y = -min_x, min_z = min_x;
+  BoxExtent extent{std::numeric_limits<float>::infinity(),
+                   -std::numeric_limits<float>::infinity(),
+                   std::numeric_limits<float>::infinity(),
+                   -std::numeric_limits<float>::infinity(),
+                   std::numeric_limits<float>::infinity(),
+                   0.0,
+                   0.0};
   for (int k = 0; k < 8; ++k) {
     const ScreenVertex s = to_screen(clip[k], viewport);
     p[k] = {snap(s.x), snap(s.y)};
     z[k] = s.z;
-    min_x = std::min(min_x, p[k].x);
-    max_x = std::max(max_x, p[k].x);
-    min_y = std::min(min_y, p[k].y);
-    max_y = std::max(max_y, p[k].y);
-    min_z = std::min(min_z, z[k]);
+    extent.min_x = std::min(extent.min_x, p[k].x);
+    extent.max_x = std::max(extent.max_x, p[k].x);
+    extent.min_y = std::min(extent.min_y, p[k].y);
+    extent.max_y = std::max(extent.max_y, p[k].y);
+    extent.min_z = std::min(extent.min_z, z[k]);
   }
-  double sx, sy;
-  steepest_slopes(p, z, sx, sy);
-  const double reach =
-      1.0 + sx * (static_cast<double>(max_x) - min_x) + sy * (static_cast<double>(max_y) - min_y);
-  const double lowest = static_cast<double>(min_z) - 8.0 * 0x1p-24 * reach;
-  out.reach = BoxReach::bounded;
-  sample_range(min_x, max_x, viewport.width, out.samples.x0, out.samples.x1);
-  sample_range(min_y, max_y, viewport.height, out.samples.y0, out.samples.y1);
-  out.samples.depth = lowest > 0.0 ? float_below(lowest) : 0.0f;
-  if (out.samples.x0 > out.samples.x1 || out.samples.y0 > out.samples.y1)
-    out.reach = BoxReach::outside;
-  return out;
+  steepest_slopes(p, z, extent.slope_x, extent.slope_y);
+  return bounded_box_samples(extent, viewport);
 }
 
 }  // namespace edgewise::detail

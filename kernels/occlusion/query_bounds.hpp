@@ -3,6 +3,7 @@
 // reference: the kernels only compare those ranges with the stored depths.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -45,6 +46,45 @@ struct BoxSamples {
   BoxReach reach = BoxReach::unbounded;
   SampleRect samples;
 };
+
+// Every coordinate finite, and min <= max on each axis: box_samples() takes it.
+bool valid_box(const OcclusionBox& box);
+
+// Corner k of the box: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+inline Vec3 box_corner(const OcclusionBox& box, int k) {
+  return {(k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
+          (k & 4) ? box.max.z : box.min.z};
+}
+
+// The 24 triangles the six faces can be cut into (each face's quad by either diagonal, in either
+// orientation of the cut): corners (a, b, c) of each, a the one the slopes are taken from.
+struct FaceTriangle {
+  int a, b, c;
+};
+inline constexpr auto kFaceTriangles = [] {
+  // The faces as quads of corners, in order around each.
+  constexpr int faces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                               {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+  std::array<FaceTriangle, 24> triangles{};
+  for (int f = 0; f < 6; ++f) {
+    for (int skip = 0; skip < 4; ++skip) {  // the corner left out
+      triangles[4 * f + skip] = {faces[f][skip == 0 ? 1 : 0], faces[f][skip <= 1 ? 2 : 1],
+                                 faces[f][skip <= 2 ? 3 : 2]};
+    }
+  }
+  return triangles;
+}();
+
+// What box_samples() finds of a box whose corners are all inside the clipping planes: the bounds
+// of its snapped corners and their least depth, and the largest |dz/dx| and |dz/dy| over
+// kFaceTriangles (steepest_slopes() in query_bounds.cpp).
+struct BoxExtent {
+  float min_x, max_x, min_y, max_y, min_z;
+  double slope_x, slope_y;
+};
+
+// The samples and depth bound of such a box (box_samples()'s last step).
+BoxSamples bounded_box_samples(const BoxExtent& extent, const Viewport& viewport);
 
 // Throws std::invalid_argument, naming box `index`, for a non-finite or inverted box.
 BoxSamples box_samples(const OcclusionBox& box, const Mat4& to_clip, const Viewport& viewport,

@@ -209,10 +209,11 @@ TEST_P(IsaForcing, KernelTableIsComplete) {
   EXPECT_NE(table.sample_fields, nullptr);
   EXPECT_NE(table.rasterize_areas, nullptr);
   EXPECT_NE(table.rect_sample_ranges, nullptr);
+  EXPECT_NE(table.box_sample_ranges, nullptr);
   EXPECT_NE(table.test_sample_rects, nullptr);
   EXPECT_NE(table.occlusion_tile_maxima, nullptr);
   EXPECT_NE(table.resolve_plane_tiles, nullptr);
-  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 17,
+  static_assert(sizeof(detail::KernelTable) == sizeof(void*) * 18,
                 "a kernel was added to KernelTable: check it here");
 }
 

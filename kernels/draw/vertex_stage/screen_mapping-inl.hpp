@@ -40,12 +40,15 @@ class ScreenMapping {
         half_height_(0.5f * static_cast<float>(viewport.height)),
         planes_(planes) {}
 
-  // Vertices in[0 .. kLanes) to positions, depth, clip_w and codes [0 .. kLanes).
-  [[gnu::always_inline]] void map(const Vec3* in, Vec2* positions, float* depth, float* clip_w,
-                                  std::int32_t* codes) const {
-    static_assert(sizeof(Vec3) == 3 * sizeof(float) && sizeof(Vec2) == 2 * sizeof(float));
-    Floats p[3];
-    load_interleaved3<Arch>(&in->x, p);
+  // A batch of vertices through the stage, one per lane.
+  struct Lanes {
+    Floats x, y;      // the snapped screen position
+    Floats depth, w;  // z/w clamped to [0, 1], and the clip-space w
+    Ints code;        // the clip class, as above
+  };
+
+  // Vertices (p[0], p[1], p[2]) = (x, y, z) of object space, one per lane.
+  [[gnu::always_inline]] Lanes map_lanes(const Floats (&p)[3]) const {
     Floats clip[4];
     for (int r = 0; r < 4; ++r) {  // transform(): ((m0 x + m1 y) + m2 z) + m3 (w = 1)
       clip[r] = ((Floats(matrix_.m[r][0]) * p[0] + Floats(matrix_.m[r][1]) * p[1]) +
@@ -53,19 +56,32 @@ class ScreenMapping {
                 Floats(matrix_.m[r][3]);
     }
     const Floats x = clip[0], y = clip[1], z = clip[2], w = clip[3];
-    code(x, y, z, w).store_unaligned(codes);
-    w.store_unaligned(clip_w);
+    Lanes out;
+    out.code = code(x, y, z, w);
+    out.w = w;
 
     // to_screen()
     const Floats one(1.0f), zero(0.0f);
     const Floats inv_w = divide_exactly(one, w);
     Floats z_over_w = z * inv_w;
     z_over_w = xsimd::select(z_over_w > one, one, z_over_w);
-    z_over_w = xsimd::select(z_over_w < zero, zero, z_over_w);
-    z_over_w.store_unaligned(depth);
-    const Floats sx = (x * inv_w + one) * Floats(half_width_);
-    const Floats sy = (one - y * inv_w) * Floats(half_height_);
-    store_interleaved2<Arch>(snap(sx), snap(sy), &positions->x);
+    out.depth = xsimd::select(z_over_w < zero, zero, z_over_w);
+    out.x = snap((x * inv_w + one) * Floats(half_width_));
+    out.y = snap((one - y * inv_w) * Floats(half_height_));
+    return out;
+  }
+
+  // Vertices in[0 .. kLanes) to positions, depth, clip_w and codes [0 .. kLanes).
+  [[gnu::always_inline]] void map(const Vec3* in, Vec2* positions, float* depth, float* clip_w,
+                                  std::int32_t* codes) const {
+    static_assert(sizeof(Vec3) == 3 * sizeof(float) && sizeof(Vec2) == 2 * sizeof(float));
+    Floats p[3];
+    load_interleaved3<Arch>(&in->x, p);
+    const Lanes mapped = map_lanes(p);
+    mapped.code.store_unaligned(codes);
+    mapped.w.store_unaligned(clip_w);
+    mapped.depth.store_unaligned(depth);
+    store_interleaved2<Arch>(mapped.x, mapped.y, &positions->x);
   }
 
  private:
