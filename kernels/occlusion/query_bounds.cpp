@@ -3,6 +3,7 @@
 #include "query_bounds.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -28,12 +29,12 @@ void sample_range(double low, double high, std::int32_t size, std::int32_t& firs
   if (static_cast<double>(last) > to) --last;
 }
 
-// The largest float not above `value`.
+// The largest float not above `value` (> 0): the nearest, or, when that lies above, the float
+// whose bits are one less (it is then positive), without a call to std::nextafter.
 float float_below(double value) {
-  float f = static_cast<float>(value);
-  if (static_cast<double>(f) > value)
-    f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-  return f;
+  const float f = static_cast<float>(value);
+  return static_cast<double>(f) > value ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) - 1u)
+                                        : f;
 }
 
 // The largest |dz/dx| and |dz/dy| of every triangle a face can be cut into (kFaceTriangles), from
