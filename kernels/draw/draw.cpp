@@ -142,7 +142,10 @@ void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& sc
   RasterReport raster;
   ShadeCounts counts;
   call.kernels->shade(batch, raster, counts);
-  DrawReport& report = call.report;
+  add_shading_counts(call.report, raster, counts);
+}
+
+void add_shading_counts(DrawReport& report, const RasterReport& raster, const ShadeCounts& counts) {
   report.rasterized += raster.drawn;
   report.culled += raster.culled;
   report.errors += raster.errors;

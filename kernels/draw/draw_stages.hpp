@@ -49,6 +49,10 @@ ScreenMesh map_to_screen(DrawCall& call, const DrawMesh& mesh, const DrawOptions
 void shade_screen_mesh(DrawCall& call, Framebuffer& target, const ScreenMesh& screen,
                        const DrawOptions& options);
 
+// What one call of the shading kernel counted (its triangles' outcomes, the fragments and the
+// shortcuts taken) put into `report`, whose counts so far are the vertex stage's.
+void add_shading_counts(DrawReport& report, const RasterReport& raster, const ShadeCounts& counts);
+
 // The vertex stage and shade_screen_mesh() of a binned() call whose mesh has no indices, with
 // the vertex stage itself run on ranges of triangles at once: each range is mapped to a screen
 // mesh of its own and binned by one task; then each bin is shaded by one task.

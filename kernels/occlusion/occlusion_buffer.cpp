@@ -61,15 +61,6 @@ constexpr std::size_t kTilesPerTask = 4096;
 // more than a quarter as many tiles.
 constexpr std::size_t kKeptPlanes = std::size_t{1} << 20;
 
-// The counts of a call drawn outside draw()'s kernels, as shade_screen_mesh() adds them.
-void add_counts(DrawReport& report, const RasterReport& raster, const detail::ShadeCounts& counts) {
-  report.rasterized += raster.drawn;
-  report.culled += raster.culled;
-  report.errors += raster.errors;
-  report.fragments = counts.fragments;
-  report.fragments_passed = counts.passed;
-}
-
 // The screen mesh's triangles in the call's view, for the scalar loops of reduced buffers.
 detail::TriangleBatch view_triangles(const detail::DrawCall& call, const detail::ScreenMesh& screen,
                                      CullMode cull) {
@@ -185,7 +176,7 @@ DrawReport OcclusionBuffer::draw_blocks_reference(const DrawMesh& mesh,
   detail::ShadeCounts counts;
   detail::draw_block_occluders_reference(batch, screen.depth.data(), reduced_depth(), raster,
                                          counts);
-  add_counts(call.report, raster, counts);
+  detail::add_shading_counts(call.report, raster, counts);
   return call.report;
 }
 
