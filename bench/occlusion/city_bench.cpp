@@ -1,7 +1,7 @@
 // City/<isa>/<whole|culled>: the procedural city (testing/scene/city.hpp) at 1280x720 from its
 // street-level camera, drawn whole and with occlusion culling (city_frame.hpp), one frame per
-// iteration on all threads; the culled frame counts the objects it drew. BoxQueries/<isa>/city:
-// its queries alone.
+// iteration on all threads; the culled frame counts the objects it drew. BoxQueries/<isa>/city
+// [/threads:all]: its queries alone, on one thread or all.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -55,16 +55,21 @@ void city_frame(benchmark::State& state, Isa isa, bool culled) {
   state.counters["objects"] = static_cast<double>(run.city.objects.size());
 }
 
-// The culled frame's queries alone: every tree's box against the buildings' and ground's depth.
-void city_box_queries(benchmark::State& state, Isa isa) {
+// The culled frame's queries alone: every tree's box against the buildings' and ground's depth,
+// on `threads` (0: all).
+void city_box_queries(benchmark::State& state, Isa isa, std::size_t threads) {
   CityRun run(isa);
   run.culled_frame();
   std::vector<OcclusionBox> boxes;
   for (std::size_t i = run.city.first_prop(); i < run.city.objects.size(); ++i)
     boxes.push_back({run.city.objects[i].bounds.min, run.city.objects[i].bounds.max});
   std::vector<Visibility> answers(boxes.size());
+  OcclusionOptions options;
+  options.transform = run.view;
+  options.isa = isa;
+  options.threads = threads;
   for (auto _ : state) {
-    run.occlusion.test_boxes(boxes, run.view, answers, isa);
+    run.occlusion.test_boxes(boxes, answers, options);
     benchmark::DoNotOptimize(answers.data());
   }
   state.counters["queries"] = benchmark::Counter(
@@ -75,9 +80,13 @@ void city_box_queries(benchmark::State& state, Isa isa) {
 
 void register_city_benchmarks() {
   for (Isa isa : supported_isas()) {
-    const std::string name = "BoxQueries/" + std::string(name_of(isa)) + "/city";
-    benchmark::RegisterBenchmark(name.c_str(), city_box_queries, isa)
-        ->Unit(benchmark::kMillisecond);
+    for (const std::size_t threads : {std::size_t{1}, std::size_t{0}}) {
+      const std::string name = "BoxQueries/" + std::string(name_of(isa)) + "/city" +
+                               (threads == 1 ? "" : "/threads:all");
+      benchmark::RegisterBenchmark(name.c_str(), city_box_queries, isa, threads)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
   }
   for (Isa isa : supported_isas()) {
     if (isa == Isa::reference) continue;  // the whole city takes the reference seconds a frame

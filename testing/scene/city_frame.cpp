@@ -74,7 +74,9 @@ CityFrame draw_city_culled(Framebuffer& target, OcclusionBuffer& occlusion, cons
   for (std::size_t i = 0; i < boxes.size(); ++i)
     boxes[i] = {city.objects[first + i].bounds.min, city.objects[first + i].bounds.max};
   std::vector<Visibility> answers(boxes.size());
-  occlusion.test_boxes(boxes, view, answers, options.isa);
+  OcclusionOptions queries = copy;
+  queries.transform = view;
+  occlusion.test_boxes(boxes, answers, queries);
   visible.positions.clear();
   visible.normals.clear();
   visible.colors.clear();

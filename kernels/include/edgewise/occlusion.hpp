@@ -15,8 +15,9 @@
 // boxes stand for the objects inside them, so their answers are conservative: occluded only when
 // no sample of any object inside them can pass.
 //
-// Thread safety: test_rects() and test_boxes() may run on many threads at once;
-// draw_occluders(), test_triangles() and clear() need the buffer to themselves.
+// Thread safety: test_rects() and test_boxes() may run on many threads at once, and each call
+// may itself run on several (their OcclusionOptions overloads); draw_occluders(),
+// test_triangles() and clear() need the buffer to themselves.
 #pragma once
 
 #include <cstddef>
@@ -147,6 +148,11 @@ class OcclusionBuffer {
   // inverted rectangle (x0 > x1 or y0 > y1) or out.size() != rects.size().
   void test_rects(std::span<const OcclusionRect> rects, std::span<Visibility> out,
                   std::optional<Isa> isa = std::nullopt) const;
+  // The same on options.threads (options.isa's kernels, options.executor's threads; the rest of
+  // the options unused): the answers are the same for every thread count, and a bad rectangle is
+  // named as above, the first of the list.
+  void test_rects(std::span<const OcclusionRect> rects, std::span<Visibility> out,
+                  const OcclusionOptions& options) const;
 
   // One answer per box, under `transform` (object space to clip space): outside when all its
   // corners lie beyond one plane of the view volume; occluded when none of the samples its faces
@@ -157,6 +163,9 @@ class OcclusionBuffer {
   // naming the box, for a non-finite or inverted box, or out.size() != boxes.size().
   void test_boxes(std::span<const OcclusionBox> boxes, const Mat4& transform,
                   std::span<Visibility> out, std::optional<Isa> isa = std::nullopt) const;
+  // The same under options.transform, on options.threads (as test_rects() above).
+  void test_boxes(std::span<const OcclusionBox> boxes, std::span<Visibility> out,
+                  const OcclusionOptions& options) const;
 
   // The stored depth of pixel (x, y) (unchecked), or of block (x, y) of a reduced buffer, and
   // every depth row-major (depth_width() x depth_height(), as Framebuffer::read_depth()).
