@@ -511,7 +511,9 @@ def coverage_dev_zero_on_standard_input(d):
 
 @case
 def coverage_dev_urandom_on_standard_input(d):
-    return Case("edgewise-coverage", ["40", "30", "-"], 1, ["<stdin>:1"], stdin="/dev/urandom")
+    # Random bytes may begin with a blank line or a comment (about one run in a hundred), which
+    # the reader skips: the error names standard input on whichever line it meets.
+    return Case("edgewise-coverage", ["40", "30", "-"], 1, ["<stdin>:"], stdin="/dev/urandom")
 
 
 # Options at and past their ends: refused at once, or bounded where the cost is by nature.
