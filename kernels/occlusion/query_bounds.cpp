@@ -59,6 +59,13 @@ void steepest_slopes(const Vec2 (&p)[8], const float (&z)[8], double& sx, double
   }
 }
 
+// Every coordinate of the box finite.
+bool finite_box(const OcclusionBox& box) {
+  const float coordinates[6] = {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z};
+  return std::all_of(std::begin(coordinates), std::end(coordinates),
+                     [](float c) { return std::isfinite(c); });
+}
+
 }  // namespace
 
 bool rect_sample_range(const OcclusionRect& rect, std::int32_t width, std::int32_t height,
@@ -87,11 +94,8 @@ SampleRect rect_samples(const OcclusionRect& rect, std::int32_t width, std::int3
 }
 
 bool valid_box(const OcclusionBox& box) {
-  const float coordinates[6] = {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z};
-  for (const float c : coordinates) {
-    if (!std::isfinite(c)) return false;
-  }
-  return box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z;
+  return finite_box(box) && box.min.x <= box.max.x && box.min.y <= box.max.y &&
+         box.min.z <= box.max.z;
 }
 
 // A face's sample at depth formula value v = (z0 + dzdy dy) + dzdx dx, every operation rounded
@@ -120,12 +124,9 @@ BoxSamples bounded_box_samples(const BoxExtent& extent, const Viewport& viewport
 BoxSamples box_samples(const OcclusionBox& box, const Mat4& to_clip, const Viewport& viewport,
                        const GuardBandPlanes& planes, std::size_t index) {
   if (!valid_box(box)) {
-    const float coordinates[6] = {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z};
-    const bool finite = std::all_of(std::begin(coordinates), std::end(coordinates),
-                                    [](float c) { return std::isfinite(c); });
     throw std::invalid_argument(
         "test_boxes: box " + std::to_string(index) +
-        (finite ? " is inverted (min > max on an axis)" : " has a non-finite coordinate"));
+        (finite_box(box) ? " is inverted (min > max on an axis)" : " has a non-finite coordinate"));
   }
   BoxSamples out;
   Vec4 clip[8];
